@@ -1,0 +1,343 @@
+//! Quantities with units, as scenes write them (`"2160 lbf"`, `"30e6 psi"`,
+//! `"1767600 kgf/m^2.1"`), converted to SI.
+//!
+//! A unit expression is a product of atoms separated by `/` (everything after the first `/`
+//! is in the denominator, as engineers write `N/m`, `kgf/m^2.1`), each atom optionally raised
+//! to a real power with `^`. Each atom has an SI factor and a dimension over the base
+//! (force, length, time); the expression's dimension must equal the dimension the key
+//! expects, so `"10 psi"` is refused where a length is expected.
+
+use std::fmt;
+
+/// Dimension as exponents of force, length and time. Real exponents are needed for the
+/// graded modulus, whose unit is force / length^(2+k).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dim {
+    /// Exponent of force.
+    pub force: f64,
+    /// Exponent of length.
+    pub length: f64,
+    /// Exponent of time.
+    pub time: f64,
+}
+
+impl Dim {
+    const fn new(force: f64, length: f64, time: f64) -> Self {
+        Self { force, length, time }
+    }
+    /// No dimension (a pure number).
+    pub const NONE: Dim = Dim::new(0.0, 0.0, 0.0);
+    /// Length (m).
+    pub const LENGTH: Dim = Dim::new(0.0, 1.0, 0.0);
+    /// Force (N).
+    pub const FORCE: Dim = Dim::new(1.0, 0.0, 0.0);
+    /// Force per unit length (N/m), the load of a 2D contact.
+    pub const FORCE_PER_LENGTH: Dim = Dim::new(1.0, -1.0, 0.0);
+    /// Stress or modulus (Pa).
+    pub const STRESS: Dim = Dim::new(1.0, -2.0, 0.0);
+    /// Moment (N m).
+    pub const MOMENT: Dim = Dim::new(1.0, 1.0, 0.0);
+    /// Time (s).
+    pub const TIME: Dim = Dim::new(0.0, 0.0, 1.0);
+    /// Speed (m/s).
+    pub const SPEED: Dim = Dim::new(0.0, 1.0, -1.0);
+
+    /// The graded modulus E0 of E = E0 y^k: force / length^(2+k).
+    pub fn graded_modulus(k: f64) -> Dim {
+        Dim::new(1.0, -(2.0 + k), 0.0)
+    }
+
+    fn scaled(self, p: f64) -> Dim {
+        Dim::new(self.force * p, self.length * p, self.time * p)
+    }
+
+    fn plus(self, o: Dim) -> Dim {
+        Dim::new(self.force + o.force, self.length + o.length, self.time + o.time)
+    }
+
+    fn close_to(self, o: Dim) -> bool {
+        const EPS: f64 = 1e-12;
+        (self.force - o.force).abs() < EPS
+            && (self.length - o.length).abs() < EPS
+            && (self.time - o.time).abs() < EPS
+    }
+}
+
+impl fmt::Display for Dim {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let mut num = Vec::new();
+        let mut den = Vec::new();
+        for (e, s) in [(self.force, "N"), (self.length, "m"), (self.time, "s")] {
+            let target = if e > 0.0 { &mut num } else { &mut den };
+            let a = e.abs();
+            if a == 0.0 {
+                continue;
+            }
+            if a == 1.0 {
+                target.push(s.to_string());
+            } else {
+                target.push(format!("{s}^{a}"));
+            }
+        }
+        match (num.is_empty(), den.is_empty()) {
+            (true, true) => write!(f, "1 (dimensionless)"),
+            (false, true) => write!(f, "{}", num.join(" ")),
+            (true, false) => write!(f, "1/{}", den.join(" ")),
+            (false, false) => write!(f, "{}/{}", num.join(" "), den.join(" ")),
+        }
+    }
+}
+
+/// Why a quantity string was refused.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum UnitError {
+    /// The number part did not parse.
+    #[error("'{text}' does not start with a number (write e.g. \"2160 lbf\" or \"30e6 psi\")")]
+    BadNumber {
+        /// The whole quantity as written.
+        text: String,
+    },
+    /// An atom is not a known unit.
+    #[error("unknown unit '{unit}' in '{text}'; known units: {known}")]
+    UnknownUnit {
+        /// The unrecognised atom.
+        unit: String,
+        /// The whole quantity as written.
+        text: String,
+        /// The list of accepted atoms.
+        known: &'static str,
+    },
+    /// The unit expression is malformed (e.g. `N//m`, `m^`).
+    #[error("malformed unit expression '{unit}' in '{text}': {why}")]
+    Malformed {
+        /// The unit part.
+        unit: String,
+        /// The whole quantity as written.
+        text: String,
+        /// What is wrong.
+        why: &'static str,
+    },
+    /// The unit has the wrong dimension for the key.
+    #[error("'{text}' has dimension {found}, but a {expected_name} ({expected}) is expected here")]
+    WrongDimension {
+        /// The whole quantity as written.
+        text: String,
+        /// Its dimension.
+        found: Dim,
+        /// The expected dimension.
+        expected: Dim,
+        /// A word for what was expected ("length", "stress" ...).
+        expected_name: &'static str,
+    },
+    /// The value is not finite.
+    #[error("'{text}' is not a finite number")]
+    NotFinite {
+        /// The whole quantity as written.
+        text: String,
+    },
+}
+
+/// The atoms a unit expression may use, for error messages.
+pub const KNOWN_UNITS: &str =
+    "m cm mm um in ft N kN MN lbf kgf Pa kPa MPa GPa psi ksi s ms us min h";
+
+/// Newtons in one pound-force (exact by definition: 0.45359237 kg x 9.80665 m/s^2).
+pub const LBF: f64 = 0.45359237 * 9.80665;
+/// Newtons in one kilogram-force (exact by definition).
+pub const KGF: f64 = 9.80665;
+/// Metres in one inch (exact by definition).
+pub const INCH: f64 = 0.0254;
+
+fn atom(name: &str) -> Option<(f64, Dim)> {
+    let l = Dim::LENGTH;
+    let f = Dim::FORCE;
+    let s = Dim::STRESS;
+    let t = Dim::TIME;
+    Some(match name {
+        "m" => (1.0, l),
+        "cm" => (1e-2, l),
+        "mm" => (1e-3, l),
+        "um" | "µm" | "μm" => (1e-6, l),
+        "in" => (INCH, l),
+        "ft" => (12.0 * INCH, l),
+        "N" => (1.0, f),
+        "kN" => (1e3, f),
+        "MN" => (1e6, f),
+        "lbf" => (LBF, f),
+        "kgf" => (KGF, f),
+        "Pa" => (1.0, s),
+        "kPa" => (1e3, s),
+        "MPa" => (1e6, s),
+        "GPa" => (1e9, s),
+        "psi" => (LBF / (INCH * INCH), s),
+        "ksi" => (1e3 * LBF / (INCH * INCH), s),
+        "s" => (1.0, t),
+        "ms" => (1e-3, t),
+        "us" | "µs" | "μs" => (1e-6, t),
+        "min" => (60.0, t),
+        "h" => (3600.0, t),
+        _ => return None,
+    })
+}
+
+/// Parse a unit expression such as `kgf/m^2.1` or `cm/s` into (SI factor, dimension).
+pub fn parse_unit(unit: &str, text: &str) -> Result<(f64, Dim), UnitError> {
+    let malformed =
+        |why| UnitError::Malformed { unit: unit.to_string(), text: text.to_string(), why };
+    let mut factor = 1.0;
+    let mut dim = Dim::NONE;
+    for (i, part) in unit.split('/').enumerate() {
+        let part = part.trim();
+        if part.is_empty() {
+            return Err(malformed("empty factor around '/'"));
+        }
+        let sign = if i == 0 { 1.0 } else { -1.0 };
+        for word in part.split(['*', ' ', '·']).filter(|w| !w.is_empty()) {
+            let (name, power) = match word.split_once('^') {
+                None => (word, 1.0),
+                Some((n, p)) => {
+                    let p: f64 =
+                        p.parse().map_err(|_| malformed("'^' must be followed by a number"))?;
+                    if !p.is_finite() {
+                        return Err(malformed("the power must be finite"));
+                    }
+                    (n, p)
+                }
+            };
+            let (f, d) = atom(name).ok_or_else(|| UnitError::UnknownUnit {
+                unit: name.to_string(),
+                text: text.to_string(),
+                known: KNOWN_UNITS,
+            })?;
+            factor *= f.powf(sign * power);
+            dim = dim.plus(d.scaled(sign * power));
+        }
+    }
+    Ok((factor, dim))
+}
+
+/// Parse `"<number> <unit>"` and convert to SI, checking the dimension.
+///
+/// A bare number string (`"0.3"`) is taken as SI. `expected_name` is the word used in the
+/// error message ("length", "stress", ...).
+pub fn parse_quantity(
+    text: &str,
+    expected: Dim,
+    expected_name: &'static str,
+) -> Result<f64, UnitError> {
+    let t = text.trim();
+    // The number is the longest prefix that parses as f64.
+    let split = t.find(|c: char| c.is_whitespace()).unwrap_or_else(|| {
+        // no space: "10psi" — split at the first alphabetic character that cannot be part of a number
+        t.char_indices()
+            .find(|&(i, c)| {
+                c.is_alphabetic()
+                    && !(matches!(c, 'e' | 'E')
+                        && t[..i].chars().any(|d| d.is_ascii_digit())
+                        && t[i + 1..]
+                            .starts_with(|n: char| n.is_ascii_digit() || n == '-' || n == '+'))
+            })
+            .map_or(t.len(), |(i, _)| i)
+    });
+    let (num, unit) = t.split_at(split);
+    let value: f64 =
+        num.trim().parse().map_err(|_| UnitError::BadNumber { text: text.to_string() })?;
+    if !value.is_finite() {
+        return Err(UnitError::NotFinite { text: text.to_string() });
+    }
+    let unit = unit.trim();
+    let (factor, dim) = if unit.is_empty() { (1.0, expected) } else { parse_unit(unit, text)? };
+    if !dim.close_to(expected) {
+        return Err(UnitError::WrongDimension {
+            text: text.to_string(),
+            found: dim,
+            expected,
+            expected_name,
+        });
+    }
+    Ok(value * factor)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rel(a: f64, b: f64) -> f64 {
+        ((a - b) / b).abs()
+    }
+
+    #[test]
+    fn conversions_match_definitions() {
+        // NIST SP 811: 1 lbf = 4.448 221 615 260 5 N; 1 psi = 6 894.757 293 168 Pa.
+        assert!(
+            rel(parse_quantity("1 lbf", Dim::FORCE, "force").unwrap(), 4.4482216152605) < 1e-15
+        );
+        assert!(
+            rel(parse_quantity("1 psi", Dim::STRESS, "stress").unwrap(), 6894.757293168361) < 1e-14
+        );
+        assert!(
+            rel(parse_quantity("30e6 psi", Dim::STRESS, "stress").unwrap(), 2.0684271879505e11)
+                < 1e-13
+        );
+        assert_eq!(parse_quantity("1 in", Dim::LENGTH, "length").unwrap(), 0.0254);
+        assert!(rel(parse_quantity("10 cm/s", Dim::SPEED, "speed").unwrap(), 0.1) < 1e-15);
+        assert!(
+            rel(parse_quantity("2 ksi", Dim::STRESS, "stress").unwrap(), 2e3 * 6894.757293168361)
+                < 1e-14
+        );
+        assert!(
+            rel(parse_quantity("5 kN/m", Dim::FORCE_PER_LENGTH, "load per length").unwrap(), 5e3)
+                < 1e-15
+        );
+        assert!(rel(parse_quantity("3 ms", Dim::TIME, "time").unwrap(), 3e-3) < 1e-15);
+        assert!(rel(parse_quantity("250um", Dim::LENGTH, "length").unwrap(), 250e-6) < 1e-15);
+        assert!(rel(parse_quantity("1.5e-3m", Dim::LENGTH, "length").unwrap(), 1.5e-3) < 1e-15);
+    }
+
+    #[test]
+    fn graded_modulus_unit() {
+        // 1767600 kgf/m^2.1 is E0 of seed 000's Table 1 (FORMULAS.md A4: kgf/m^(2+k)).
+        let v = parse_quantity("1767600 kgf/m^2.1", Dim::graded_modulus(0.1), "graded modulus")
+            .unwrap();
+        assert!(rel(v, 1767600.0 * KGF) < 1e-15);
+        // The same number with the wrong exponent for k = 0.1 is refused.
+        let e = parse_quantity("1767600 kgf/m^2", Dim::graded_modulus(0.1), "graded modulus")
+            .unwrap_err();
+        assert!(matches!(e, UnitError::WrongDimension { .. }), "{e}");
+        // psi per inch^0.5 for k = 0.5: lbf/in^2.5
+        let v = parse_quantity("1 lbf/in^2.5", Dim::graded_modulus(0.5), "graded modulus").unwrap();
+        assert!(rel(v, LBF / INCH.powf(2.5)) < 1e-14);
+    }
+
+    #[test]
+    fn bad_quantities_say_what_is_wrong() {
+        let cases: [(&str, Dim); 7] = [
+            ("abc", Dim::LENGTH),
+            ("10 furlong", Dim::LENGTH),
+            ("10 psi", Dim::LENGTH),
+            ("10 N//m", Dim::FORCE_PER_LENGTH),
+            ("10 m^", Dim::LENGTH),
+            ("inf m", Dim::LENGTH),
+            ("1e999 m", Dim::LENGTH),
+        ];
+        for (text, dim) in cases {
+            let e = parse_quantity(text, dim, "length").unwrap_err();
+            let msg = e.to_string();
+            assert!(
+                msg.contains(text.split_whitespace().next().unwrap_or(text)) || msg.contains(text),
+                "{msg}"
+            );
+        }
+        let msg = parse_quantity("10 furlong", Dim::LENGTH, "length").unwrap_err().to_string();
+        assert!(msg.contains("furlong") && msg.contains("lbf"), "{msg}");
+        let msg = parse_quantity("10 psi", Dim::LENGTH, "length").unwrap_err().to_string();
+        assert!(msg.contains("length") && msg.contains("N/m^2"), "{msg}");
+    }
+
+    #[test]
+    fn bare_numbers_are_si() {
+        assert_eq!(parse_quantity("0.3", Dim::LENGTH, "length").unwrap(), 0.3);
+        assert_eq!(parse_quantity(" -2.5e3 ", Dim::FORCE, "force").unwrap(), -2500.0);
+    }
+}
