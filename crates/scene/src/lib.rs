@@ -5,9 +5,19 @@
 //! place (with the CLI) that knows about units, TOML and files; the physics crates work on
 //! plain SI numbers.
 //!
-//! Status: only the [`units`] layer is written so far. Parsing of whole scenes, validation
-//! with file/line/column errors, the effect planner and `run(scene)` are issue 10.
+//! Written so far: [`units`] (quantities with units to SI) and [`Scene`] (parsing and
+//! validation, with errors naming file, line, column, key and what is allowed). The effect
+//! planner and `run(scene)` are still to come (issue 10).
 
+mod error;
+mod raw;
+mod scene;
 pub mod units;
 
+pub use error::{ErrorKind, SceneError};
+pub use scene::{
+    Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
+    NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Substrate, DEFAULT_SCENE,
+    MAX_GRID,
+};
 pub use units::{parse_quantity, Dim, UnitError};

@@ -1,0 +1,114 @@
+//! The scene crate's error: where (file, line, column, key), what, and a hint.
+
+use std::fmt;
+use std::path::PathBuf;
+
+/// What kind of problem a scene has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// The file could not be read or written.
+    Io,
+    /// The text is not valid TOML.
+    Syntax,
+    /// A key the format does not have, a missing key, or a value of the wrong type.
+    Schema,
+    /// A quantity with a unit that is unknown or has the wrong dimension.
+    Unit,
+    /// A value outside what the physics allows (negative radius, nu > 0.5, ...).
+    OutOfRange,
+    /// A combination that cannot be solved as asked (T > fP with partial slip, ...).
+    Impossible,
+}
+
+/// A problem with a scene, located as precisely as the input allows.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct SceneError {
+    /// What kind of problem.
+    pub kind: ErrorKind,
+    /// The scene file, when the scene came from one.
+    pub file: Option<PathBuf>,
+    /// 1-based line and column of the offending text, when known.
+    pub position: Option<(usize, usize)>,
+    /// Dotted key, e.g. `substrate.nu`, when the problem belongs to one.
+    pub key: Option<String>,
+    /// What is wrong.
+    pub message: String,
+    /// What is allowed, or how to fix it.
+    pub hint: Option<String>,
+}
+
+impl SceneError {
+    pub(crate) fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
+        Self { kind, file: None, position: None, key: None, message: message.into(), hint: None }
+    }
+
+    pub(crate) fn key(mut self, key: impl Into<String>) -> Self {
+        self.key = Some(key.into());
+        self
+    }
+
+    pub(crate) fn hint(mut self, hint: impl Into<String>) -> Self {
+        self.hint = Some(hint.into());
+        self
+    }
+
+    /// Attach a byte span of `source`, converted to line and column.
+    pub(crate) fn at(mut self, source: &str, span: Option<std::ops::Range<usize>>) -> Self {
+        if let Some(span) = span {
+            self.position = Some(line_col(source, span.start));
+        }
+        self
+    }
+
+    pub(crate) fn in_file(mut self, file: Option<PathBuf>) -> Self {
+        if self.file.is_none() {
+            self.file = file;
+        }
+        self
+    }
+}
+
+/// 1-based (line, column) of byte offset `at` in `source`; columns count characters.
+pub(crate) fn line_col(source: &str, at: usize) -> (usize, usize) {
+    let at = at.min(source.len());
+    let before = &source[..source.floor_char_boundary_compat(at)];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+trait FloorCharBoundary {
+    fn floor_char_boundary_compat(&self, i: usize) -> usize;
+}
+
+impl FloorCharBoundary for str {
+    fn floor_char_boundary_compat(&self, mut i: usize) -> usize {
+        while i > 0 && !self.is_char_boundary(i) {
+            i -= 1;
+        }
+        i
+    }
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let file =
+            self.file.as_ref().map_or_else(|| "<scene>".to_string(), |p| p.display().to_string());
+        match self.position {
+            Some((l, c)) => write!(f, "{file}:{l}:{c}: ")?,
+            None => write!(f, "{file}: ")?,
+        }
+        if let Some(k) = &self.key {
+            write!(f, "`{k}`: ")?;
+        }
+        write!(f, "{}", self.message)?;
+        if let Some(h) = &self.hint {
+            write!(f, "\n  hint: {h}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for SceneError {}
