@@ -134,3 +134,16 @@ mtiny = logspace(1e-300, 0.5, 60)
 ms = mneg + mlin + mnear1 + mtiny + [0.0, 0.5, -1e-300]
 write("ellipk", ms, mp.ellipk, "m in [-1e300, 1 - 2^-53]; parameter m = k^2; columns m, K(m)")
 write("ellipe", ms + [1.0], mp.ellipe, "m in [-1e300, 1]; parameter m = k^2; columns m, E(m)")
+def ellipd(m):
+    # (K - E)/m cancels like 1/|m|: raise the working precision by log10(1/|m|) digits so the
+    # 60 significant digits survive the subtraction.
+    if m == 0:
+        return mp.pi / 4
+    extra = max(0, int(-mpmath.log10(abs(m)))) + 10
+    with mp.workdps(mp.dps + extra):
+        m = mpf(m)
+        return (mp.ellipk(m) - mp.ellipe(m)) / m
+
+
+write("ellipd", ms, ellipd,
+      "m in [-1e300, 1 - 2^-53]; parameter m = k^2; columns m, D(m) = (K(m) - E(m))/m")

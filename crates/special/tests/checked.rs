@@ -18,7 +18,7 @@ type Pair = (&'static str, fn(f64) -> f64, fn(f64) -> Result<f64, Error>);
 
 #[test]
 fn checked_twins_reject_bad_input() {
-    let pairs: [(Pair, &[f64]); 14] = [
+    let pairs: [(Pair, &[f64]); 15] = [
         (("gamma", sp::gamma, sp::checked_gamma), &[f64::NAN, 0.0, -0.0, -1.0, -170.0, -1e300]),
         (("ln_gamma", sp::ln_gamma, sp::checked_ln_gamma), &[f64::NAN, 0.0, -1.0, -0.5]),
         (("bessel_i0", sp::bessel_i0, sp::checked_bessel_i0), &[f64::NAN]),
@@ -36,6 +36,7 @@ fn checked_twins_reject_bad_input() {
         ),
         (("ellipk", sp::ellipk, sp::checked_ellipk), &[f64::NAN, 1.0, 1.5, f64::INFINITY]),
         (("ellipe", sp::ellipe, sp::checked_ellipe), &[f64::NAN, 1.0 + f64::EPSILON, 2.0]),
+        (("ellipd", sp::ellipd, sp::checked_ellipd), &[f64::NAN, 1.0, 1.5, f64::INFINITY]),
     ];
     for ((name, plain, checked), bad) in pairs {
         for &x in bad {

@@ -61,3 +61,7 @@ fn ellipk_table() {
 fn ellipe_table() {
     check_table("ellipe", sp::ellipe);
 }
+#[test]
+fn ellipd_table() {
+    check_table("ellipd", sp::ellipd);
+}

@@ -142,3 +142,31 @@ fn ratios_match_quotients_of_plain_functions() {
     println!("ratios vs quotients: max rel = {max:.2e}");
     assert!(max <= tol::IDENTITY);
 }
+
+/// $D(m)=(K-E)/m$ against the difference of [`sp::ellipk`] and [`sp::ellipe`] where that
+/// difference does not cancel ($|m|\ge 0.5$), and $K - E = m D$ as $m\to1$; at $m = 0$,
+/// $D = \pi/4$ exactly in the limit.
+#[test]
+fn ellipd_consistent_with_k_and_e() {
+    let mut worst = 0.0_f64;
+    for i in 0..=400 {
+        let m = -1e3 + (1.0 - 1e-9 + 1e3) * f64::from(i) / 400.0;
+        if m.abs() < 0.5 {
+            continue;
+        }
+        let direct = (sp::ellipk(m) - sp::ellipe(m)) / m;
+        let e = ((sp::ellipd(m) - direct) / direct).abs();
+        worst = worst.max(e);
+    }
+    println!("ellipd vs (K-E)/m for |m| >= 0.5: max rel diff {worst:.2e}");
+    // (K - E) loses at most a factor K/(K-E) <= 3 of accuracy on this range: 3 x 2 x 4 ulp.
+    assert!(worst < 1e-14, "{worst}");
+    assert!((sp::ellipd(0.0) - std::f64::consts::FRAC_PI_4).abs() <= f64::EPSILON);
+    assert!((sp::ellipd(1e-300) - std::f64::consts::FRAC_PI_4).abs() <= f64::EPSILON);
+    // Extremes: finite, positive, and on the asymptote ln(4 sqrt(-m))/(-m) for m -> -inf.
+    let m = -f64::MAX;
+    let asym = (4.0 * (-m).sqrt()).ln() / (-m);
+    let d = sp::ellipd(m);
+    assert!(d.is_finite() && d > 0.0 && ((d - asym) / asym).abs() < 1e-12, "{d} vs {asym}");
+    assert!(sp::ellipd(1.0 - f64::EPSILON / 2.0).is_finite());
+}
