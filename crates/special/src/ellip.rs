@@ -189,8 +189,8 @@ fn carlson_rd(mut x: f64, mut y: f64, mut z: f64) -> f64 {
 /// too. It appears in Cattaneo's compliance $\Lambda$ (FORMULAS.md §E) and in Lubkin's torsion
 /// solution, where $K(k)-E(k)$ with $k\to0$ is needed (FORMULAS.md §G).
 ///
-/// Domain: $m<1$ (logarithmic growth as $m\to1^-$; $D\approx\ln(4\sqrt{-m})/(-m)$ as
-/// $m\to-\infty$). NaN for $m\ge1$ and NaN. Source: DLMF 19.2.8, 19.25.1; Carlson (1995).
+/// Domain: $m<1$ (logarithmic growth as $m\to1^-$; $D\approx1/\sqrt{-m}$ as
+/// $m\to-\infty$, where $E$ dominates). NaN for $m\ge1$ and NaN. Source: DLMF 19.2.8, 19.25.1; Carlson (1995).
 pub fn ellipd(m: f64) -> f64 {
     if m.is_nan() || m >= 1.0 {
         return f64::NAN;
