@@ -1,1 +1,36 @@
-//! Placeholder: this crate is being written (see ARCHITECTURE.md).
+//! Quadrature for stickslip: fixed Gauss rules, adaptive integrators and singular integrals,
+//! every one of them returning an [`Estimate`] whose `error` is an honest bound, and never
+//! silently accepting a non-finite integrand value or an unmet tolerance.
+//!
+//! | task | function / type |
+//! |---|---|
+//! | fixed rule, planned once | [`GaussLegendre`], [`GaussJacobi`], [`GaussChebyshev`] (trait [`Rule`]) |
+//! | adaptive, smooth or piecewise smooth, finite or infinite range | [`gauss_kronrod`] |
+//! | double exponential | [`tanh_sinh()`] |
+//! | $\int f\,(x-a)^\alpha(b-x)^\beta$ | [`algebraic_endpoints`] |
+//! | $\int f(s)\,|x-s|^{-k}$ | [`weakly_singular`], [`weakly_singular_weighted`] |
+//! | $\mathrm{PV}\int f(t)/(t-x)$ | [`cauchy_pv`] |
+//!
+//! Tolerances are [`Tolerance`]: accept when $|I-Q| \le \max(\text{abs}, \text{rel}|Q|)$.
+//! The [`battery`] module holds the accuracy-versus-cost test battery (closed forms and mpmath
+//! values) used by the tests and the project's report.
+//!
+//! This crate knows nothing about contact mechanics (ARCHITECTURE.md); the kernels of
+//! `../shared/spec/FORMULAS.md` appear only as test integrands.
+
+mod error;
+mod gamma;
+pub mod kronrod;
+pub mod rules;
+pub mod singular;
+pub mod tanh_sinh;
+mod types;
+
+pub mod battery;
+
+pub use error::QuadError;
+pub use kronrod::{gauss_kronrod, AdaptiveConfig, KronrodRule};
+pub use rules::{ChebyshevKind, GaussChebyshev, GaussJacobi, GaussLegendre, Rule};
+pub use singular::{algebraic_endpoints, cauchy_pv, weakly_singular, weakly_singular_weighted};
+pub use tanh_sinh::tanh_sinh;
+pub use types::{Estimate, Tolerance};
