@@ -1,0 +1,436 @@
+//! Contact grids: rectangular elements of uniform size on a common lattice, with the normal
+//! pressure of each element.
+//!
+//! Seed 002 §3.3.1 discretises the contact area "into a finite number of rectangular grid
+//! elements"; the discrete normal force of element $k$ is $P_k = p_k h_x h_y$ with $p_k$ the
+//! pressure at the element centre.
+//!
+//! Lattice: element $(i, j)$ has centre
+//! $(x_0 + (i + \tfrac12) h_x,\; y_0 + (j + \tfrac12) h_y)$; a patch takes the elements whose
+//! centres lie strictly inside its shape.
+
+use crate::error::{non_negative, positive, Error, Result};
+
+/// A plane shape that selects lattice elements by their centres.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// Circle of centre `(cx, cy)` and radius `r`.
+    Circle {
+        /// Centre x.
+        cx: f64,
+        /// Centre y.
+        cy: f64,
+        /// Radius.
+        r: f64,
+    },
+    /// Axis-aligned ellipse of centre `(cx, cy)`, semi-axis `a` along $x$ and `b` along $y$.
+    Ellipse {
+        /// Centre x.
+        cx: f64,
+        /// Centre y.
+        cy: f64,
+        /// Semi-axis along x.
+        a: f64,
+        /// Semi-axis along y.
+        b: f64,
+    },
+    /// Axis-aligned rectangle of centre `(cx, cy)` and full sides `wx`, `wy`.
+    Rectangle {
+        /// Centre x.
+        cx: f64,
+        /// Centre y.
+        cy: f64,
+        /// Full side along x.
+        wx: f64,
+        /// Full side along y.
+        wy: f64,
+    },
+}
+
+impl Shape {
+    fn validate(&self) -> Result<()> {
+        let check_centre = |cx: f64, cy: f64| -> Result<()> {
+            for (name, v) in [("shape centre x", cx), ("shape centre y", cy)] {
+                if !v.is_finite() {
+                    return Err(Error::OutOfDomain { name, value: v, allowed: "finite" });
+                }
+            }
+            Ok(())
+        };
+        match *self {
+            Shape::Circle { cx, cy, r } => {
+                check_centre(cx, cy)?;
+                positive("circle radius", r)?;
+            }
+            Shape::Ellipse { cx, cy, a, b } => {
+                check_centre(cx, cy)?;
+                positive("ellipse semi-axis a", a)?;
+                positive("ellipse semi-axis b", b)?;
+            }
+            Shape::Rectangle { cx, cy, wx, wy } => {
+                check_centre(cx, cy)?;
+                positive("rectangle side wx", wx)?;
+                positive("rectangle side wy", wy)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether the point lies strictly inside.
+    #[must_use]
+    pub fn contains(&self, x: f64, y: f64) -> bool {
+        match *self {
+            Shape::Circle { cx, cy, r } => (x - cx).powi(2) + (y - cy).powi(2) < r * r,
+            Shape::Ellipse { cx, cy, a, b } => {
+                ((x - cx) / a).powi(2) + ((y - cy) / b).powi(2) < 1.0
+            }
+            Shape::Rectangle { cx, cy, wx, wy } => {
+                (x - cx).abs() < 0.5 * wx && (y - cy).abs() < 0.5 * wy
+            }
+        }
+    }
+
+    /// Centre and half-extents of the bounding box.
+    fn bounds(&self) -> (f64, f64, f64, f64) {
+        match *self {
+            Shape::Circle { cx, cy, r } => (cx, cy, r, r),
+            Shape::Ellipse { cx, cy, a, b } => (cx, cy, a, b),
+            Shape::Rectangle { cx, cy, wx, wy } => (cx, cy, 0.5 * wx, 0.5 * wy),
+        }
+    }
+}
+
+/// How the normal pressure of a patch is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PatchPressure {
+    /// The same pressure on every element of the patch.
+    Uniform(f64),
+    /// Hertz pressure $p = p_0\sqrt{1 - \hat x^2/a^2 - \hat y^2/b^2}$ over a circle or ellipse
+    /// patch, with $p_0 = 3P/(2\pi a b)$ (FORMULAS.md E; Johnson eq. 4.37). The element
+    /// pressures sampled at the centres are rescaled so that the element forces sum to
+    /// exactly `load` (the discrete force balance the LP needs).
+    Hertz {
+        /// Total normal load $P$ on the patch.
+        load: f64,
+    },
+}
+
+/// One contact patch: a shape and its pressure.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Patch {
+    /// Which lattice elements belong to the patch.
+    pub shape: Shape,
+    /// Their pressure.
+    pub pressure: PatchPressure,
+}
+
+/// A contact grid of equal rectangular elements.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactGrid {
+    /// Element side along $x$.
+    pub hx: f64,
+    /// Element side along $y$.
+    pub hy: f64,
+    /// Element centres, x.
+    pub x: Vec<f64>,
+    /// Element centres, y.
+    pub y: Vec<f64>,
+    /// Normal pressure of each element.
+    pub pressure: Vec<f64>,
+    /// Patch index of each element (0 for single-shape grids).
+    pub patch: Vec<usize>,
+}
+
+impl ContactGrid {
+    /// Build a grid from several patches on the lattice of spacing `(hx, hy)` and origin
+    /// `(x0, y0)`.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for non-positive spacings or bad shapes/pressures,
+    /// [`Error::OverlappingPatches`] if two patches select the same element,
+    /// [`Error::EmptyGrid`] if no element is selected (or a patch selects none).
+    pub fn from_patches(hx: f64, hy: f64, origin: (f64, f64), patches: &[Patch]) -> Result<Self> {
+        positive("element side hx", hx)?;
+        positive("element side hy", hy)?;
+        for (name, v) in [("lattice origin x", origin.0), ("lattice origin y", origin.1)] {
+            if !v.is_finite() {
+                return Err(Error::OutOfDomain { name, value: v, allowed: "finite" });
+            }
+        }
+        if patches.is_empty() {
+            return Err(Error::EmptyGrid { reason: "no patch given" });
+        }
+        // (i, j) -> patch, collected per patch in lattice order.
+        let mut cells: Vec<(i64, i64, usize)> = Vec::new();
+        for (pi, p) in patches.iter().enumerate() {
+            p.shape.validate()?;
+            match p.pressure {
+                PatchPressure::Uniform(v) => {
+                    non_negative("patch pressure", v)?;
+                }
+                PatchPressure::Hertz { load } => {
+                    positive("patch Hertz load", load)?;
+                    if matches!(p.shape, Shape::Rectangle { .. }) {
+                        return Err(Error::OutOfDomain {
+                            name: "Hertz pressure on a rectangle patch",
+                            value: load,
+                            allowed: "a circle or ellipse patch",
+                        });
+                    }
+                }
+            }
+            let (cx, cy, ex, ey) = p.shape.bounds();
+            let i0 = ((cx - ex - origin.0) / hx).floor() as i64 - 1;
+            let i1 = ((cx + ex - origin.0) / hx).ceil() as i64 + 1;
+            let j0 = ((cy - ey - origin.1) / hy).floor() as i64 - 1;
+            let j1 = ((cy + ey - origin.1) / hy).ceil() as i64 + 1;
+            let before = cells.len();
+            for j in j0..=j1 {
+                for i in i0..=i1 {
+                    let x = origin.0 + (i as f64 + 0.5) * hx;
+                    let y = origin.1 + (j as f64 + 0.5) * hy;
+                    if p.shape.contains(x, y) {
+                        cells.push((i, j, pi));
+                    }
+                }
+            }
+            if cells.len() == before {
+                return Err(Error::EmptyGrid { reason: "a patch contains no element centre" });
+            }
+        }
+        let mut sorted = cells.clone();
+        sorted.sort_unstable();
+        for w in sorted.windows(2) {
+            if w[0].0 == w[1].0 && w[0].1 == w[1].1 {
+                return Err(Error::OverlappingPatches {
+                    first: w[0].2.min(w[1].2),
+                    second: w[0].2.max(w[1].2),
+                    x: origin.0 + (w[0].0 as f64 + 0.5) * hx,
+                    y: origin.1 + (w[0].1 as f64 + 0.5) * hy,
+                });
+            }
+        }
+        let n = cells.len();
+        let mut grid = ContactGrid {
+            hx,
+            hy,
+            x: Vec::with_capacity(n),
+            y: Vec::with_capacity(n),
+            pressure: Vec::with_capacity(n),
+            patch: Vec::with_capacity(n),
+        };
+        for &(i, j, pi) in &cells {
+            let x = origin.0 + (i as f64 + 0.5) * hx;
+            let y = origin.1 + (j as f64 + 0.5) * hy;
+            let p = match (patches[pi].pressure, patches[pi].shape) {
+                (PatchPressure::Uniform(v), _) => v,
+                (PatchPressure::Hertz { .. }, Shape::Circle { cx, cy, r }) => {
+                    (1.0 - ((x - cx) / r).powi(2) - ((y - cy) / r).powi(2)).max(0.0).sqrt()
+                }
+                (PatchPressure::Hertz { .. }, Shape::Ellipse { cx, cy, a, b }) => {
+                    (1.0 - ((x - cx) / a).powi(2) - ((y - cy) / b).powi(2)).max(0.0).sqrt()
+                }
+                (PatchPressure::Hertz { .. }, Shape::Rectangle { .. }) => 0.0,
+            };
+            grid.x.push(x);
+            grid.y.push(y);
+            grid.pressure.push(p);
+            grid.patch.push(pi);
+        }
+        // Hertz patches: scale the shape function so the element forces sum to the load.
+        let area = hx * hy;
+        for (pi, p) in patches.iter().enumerate() {
+            if let PatchPressure::Hertz { load } = p.pressure {
+                let sum: f64 =
+                    (0..n).filter(|&k| grid.patch[k] == pi).map(|k| grid.pressure[k]).sum();
+                let scale = load / (sum * area);
+                for k in 0..n {
+                    if grid.patch[k] == pi {
+                        grid.pressure[k] *= scale;
+                    }
+                }
+            }
+        }
+        Ok(grid)
+    }
+
+    /// Hertz circle of radius `a` carrying `load`, on a square lattice with `n_across`
+    /// elements across the diameter, centred at the origin (a lattice corner at the centre
+    /// when `n_across` is even). `n_across = 10` gives seed 002's 80 elements.
+    ///
+    /// # Errors
+    /// As [`ContactGrid::from_patches`]; `n_across` must be at least 2.
+    pub fn hertz_circle(a: f64, load: f64, n_across: usize) -> Result<Self> {
+        Self::hertz_ellipse(a, a, load, n_across, n_across)
+    }
+
+    /// Hertz ellipse (semi-axes `a` along $x$, `b` along $y$) carrying `load`, with
+    /// `nx` × `ny` lattice cells over its bounding box, centred at the origin.
+    ///
+    /// # Errors
+    /// As [`ContactGrid::from_patches`]; `nx`, `ny` must be at least 2.
+    pub fn hertz_ellipse(a: f64, b: f64, load: f64, nx: usize, ny: usize) -> Result<Self> {
+        check_count("nx", nx)?;
+        check_count("ny", ny)?;
+        positive("ellipse semi-axis a", a)?;
+        positive("ellipse semi-axis b", b)?;
+        let hx = 2.0 * a / nx as f64;
+        let hy = 2.0 * b / ny as f64;
+        let shape = Shape::Ellipse { cx: 0.0, cy: 0.0, a, b };
+        Self::from_patches(
+            hx,
+            hy,
+            (-a, -b),
+            &[Patch { shape, pressure: PatchPressure::Hertz { load } }],
+        )
+    }
+
+    /// Uniformly pressed square of side `side` centred at the origin, `n` × `n` elements.
+    ///
+    /// # Errors
+    /// As [`ContactGrid::from_patches`].
+    pub fn uniform_square(side: f64, pressure: f64, n: usize) -> Result<Self> {
+        check_count("n", n)?;
+        positive("square side", side)?;
+        let h = side / n as f64;
+        let shape = Shape::Rectangle { cx: 0.0, cy: 0.0, wx: side, wy: side };
+        Self::from_patches(
+            h,
+            h,
+            (-0.5 * side, -0.5 * side),
+            &[Patch { shape, pressure: PatchPressure::Uniform(pressure) }],
+        )
+    }
+
+    /// A grid from a boolean mask over an `nx` × `ny` lattice (`mask[j * nx + i]`), with
+    /// the pressure of each lattice cell (`pressure[j * nx + i]`; ignored where the mask is
+    /// false).
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] for wrong slice lengths, [`Error::OutOfDomain`] for bad
+    /// spacing or a negative pressure, [`Error::EmptyGrid`] for an all-false mask.
+    pub fn from_mask(
+        hx: f64,
+        hy: f64,
+        origin: (f64, f64),
+        nx: usize,
+        ny: usize,
+        mask: &[bool],
+        pressure: &[f64],
+    ) -> Result<Self> {
+        positive("element side hx", hx)?;
+        positive("element side hy", hy)?;
+        if mask.len() != nx * ny {
+            return Err(Error::LengthMismatch { name: "mask", expected: nx * ny, got: mask.len() });
+        }
+        if pressure.len() != nx * ny {
+            return Err(Error::LengthMismatch {
+                name: "pressure",
+                expected: nx * ny,
+                got: pressure.len(),
+            });
+        }
+        let mut grid =
+            ContactGrid { hx, hy, x: vec![], y: vec![], pressure: vec![], patch: vec![] };
+        for j in 0..ny {
+            for i in 0..nx {
+                if mask[j * nx + i] {
+                    grid.x.push(origin.0 + (i as f64 + 0.5) * hx);
+                    grid.y.push(origin.1 + (j as f64 + 0.5) * hy);
+                    grid.pressure.push(non_negative("cell pressure", pressure[j * nx + i])?);
+                    grid.patch.push(0);
+                }
+            }
+        }
+        if grid.x.is_empty() {
+            return Err(Error::EmptyGrid { reason: "the mask selects no cell" });
+        }
+        Ok(grid)
+    }
+
+    /// Number of elements $N$.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Whether the grid has no element (never true for a constructed grid).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.x.is_empty()
+    }
+
+    /// Element area $h_x h_y$.
+    #[must_use]
+    pub fn element_area(&self) -> f64 {
+        self.hx * self.hy
+    }
+
+    /// Discrete normal force of each element, $P_k = p_k h_x h_y$ (seed 002 §3.3.1).
+    #[must_use]
+    pub fn normal_force(&self) -> Vec<f64> {
+        let area = self.element_area();
+        self.pressure.iter().map(|p| p * area).collect()
+    }
+
+    /// Total normal force $\sum_k P_k$.
+    #[must_use]
+    pub fn total_normal_force(&self) -> f64 {
+        self.normal_force().iter().sum()
+    }
+
+    /// Centre of the normal force, $\sum_k P_k \mathbf{x}_k / \sum_k P_k$ (the element
+    /// centroid if all pressures vanish).
+    #[must_use]
+    pub fn force_centroid(&self) -> (f64, f64) {
+        let p = self.normal_force();
+        let total: f64 = p.iter().sum();
+        let n = self.len() as f64;
+        if total > 0.0 {
+            let sx: f64 = p.iter().zip(&self.x).map(|(p, x)| p * x).sum();
+            let sy: f64 = p.iter().zip(&self.y).map(|(p, y)| p * y).sum();
+            (sx / total, sy / total)
+        } else {
+            (self.x.iter().sum::<f64>() / n, self.y.iter().sum::<f64>() / n)
+        }
+    }
+}
+
+fn check_count(name: &'static str, n: usize) -> Result<()> {
+    if n < 2 {
+        return Err(Error::OutOfDomain { name, value: n as f64, allowed: "at least 2" });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seed_circle_has_80_elements() {
+        let g = ContactGrid::hertz_circle(0.046148, 2160.0, 10).unwrap();
+        assert_eq!(g.len(), 80);
+        assert!((g.total_normal_force() - 2160.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn two_squares_and_overlap() {
+        let sq = |cx: f64, p: f64| Patch {
+            shape: Shape::Rectangle { cx, cy: 0.0, wx: 0.6, wy: 0.6 },
+            pressure: PatchPressure::Uniform(p),
+        };
+        let g = ContactGrid::from_patches(0.05, 0.05, (-0.8, -0.3), &[sq(-0.5, 2e4), sq(0.5, 1e4)])
+            .unwrap();
+        assert_eq!(g.len(), 288);
+        let f = g.normal_force();
+        let p0: f64 = (0..288).filter(|&k| g.patch[k] == 0).map(|k| f[k]).sum();
+        assert!((p0 - 2e4 * 0.36).abs() < 1e-8, "{p0}");
+        let e = ContactGrid::from_patches(0.06, 0.06, (0.0, -0.3), &[sq(-0.5, 1.0), sq(-0.2, 1.0)]);
+        assert!(matches!(e, Err(Error::OverlappingPatches { first: 0, second: 1, .. })), "{e:?}");
+        let e = ContactGrid::from_patches(0.06, 0.06, (0.0, 0.0), &[]);
+        assert!(matches!(e, Err(Error::EmptyGrid { .. })));
+        let e = ContactGrid::from_mask(1.0, 1.0, (0.0, 0.0), 2, 2, &[false; 4], &[1.0; 4]);
+        assert!(matches!(e, Err(Error::EmptyGrid { .. })));
+    }
+}

@@ -1,0 +1,28 @@
+//! Tangential traction and microslip in frictional contacts.
+//!
+//! * [`closed`]: Mindlin (circle), Cattaneo (ellipse), Mindlin–Deresiewicz (unloading,
+//!   hysteresis, energy per cycle) and Lubkin (torsion) closed forms, FORMULAS.md E and G;
+//! * [`grid`]: contact grids of rectangular elements with their normal pressure;
+//! * [`influence`]: tangential influence matrices from the exact uniform-rectangle formula
+//!   (FORMULAS.md F) or the seed's point-load approximation;
+//! * [`lp`]: the modified linear program of seed 002, Fig. 3.5;
+//! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid.
+//!
+//! Units: any consistent set (SI, or inch–lbf–psi as in seed 002's examples).
+#![cfg_attr(docsrs, feature(doc_auto_cfg))]
+
+pub mod closed;
+pub mod error;
+pub mod grid;
+pub mod influence;
+pub mod lp;
+pub mod solve;
+
+pub use error::{Error, Result};
+pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
+pub use influence::InfluenceModel;
+pub use lp::{LpConfig, LpSolution};
+pub use solve::{
+    DirectionAssumption, ElementState, Load, PatchSummary, Regime, SolveInfo, TractionProblem,
+    TractionSolution,
+};
