@@ -1,0 +1,1 @@
+//! Verification of the published figures and tables (being written: issue 7).
