@@ -1,1 +1,66 @@
-//! Placeholder: this crate is being written (see ARCHITECTURE.md).
+//! Rolling contact with stick and slip: Carter's elastic cylinders and Goryacheva's
+//! viscoelastic cylinder rolling on a base of the same material (plane strain).
+//!
+//! - [`carter`](mod@carter): elastic cylinders, closed form (half-width, stick zone, creep law, tractions).
+//! - [`goryacheva`]: the viscoelastic problem of Goryacheva, PMM 37(5) 1973 (seed 001), in the
+//!   corrected forms of `../shared/spec/FORMULAS.md` section D, solved through scaled
+//!   equations that contain only the bounded ratios $I_1/I_0$ and $K_0/K_1$, with analytic
+//!   brackets for both roots; pressure and shear (eqs 12, 13) by quadrature.
+//! - [`sweep`]: the seed's claim $l\approx\sqrt{8KRP\beta/\alpha}$ over its stated grid.
+//!
+//! Units are SI throughout: $E$ \[Pa\], $R$ and lengths \[m\], $P$ and $Q$ \[N/m\] (per unit length
+//! of the cylinders), stresses \[Pa\], moments \[N\] (N·m per m), $\alpha, \beta$ \[s\], $w$ \[m/s\];
+//! creep $\delta$, friction $\rho$ and $\nu$ are dimensionless.
+//!
+//! Sign conventions: the cylinder moves in $+x$, the contact is $(-a, b)$ with the trailing
+//! edge at $-a$, slip at the trailing edge and stick at the leading edge; see [`carter`](mod@carter).
+#![cfg_attr(docsrs, feature(doc_auto_cfg))]
+
+pub mod carter;
+mod error;
+pub mod goryacheva;
+mod kernel;
+mod ratios;
+mod roots;
+pub mod sweep;
+
+pub use carter::{carter, carter_creep_force, compliance, CarterParams, CarterSolution};
+pub use error::Error;
+pub use goryacheva::{
+    contact_length, solve, ContactLength, GoryachevaParams, GoryachevaSolution, Response, SolveInfo,
+};
+pub use stickslip_quad::{Estimate, Tolerance};
+pub use sweep::{claim_sweep, ClaimRow, SweepMaterial};
+
+/// Which parts of the contact stick.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Regime {
+    /// A slip zone at the trailing edge and a stick zone at the leading edge.
+    StickSlip,
+    /// No stick zone: $|Q| = \rho P$.
+    FullSlip,
+    /// The stick zone covers the whole contact ($\delta = 0$, $Q = 0$).
+    FullStick,
+}
+
+/// Accuracy knob of the stress quadratures ([`GoryachevaSolution::pressure`],
+/// [`GoryachevaSolution::shear`]).
+///
+/// The quadrature error is bounded by $\max(\text{abs}, \text{rel}\cdot S)$, where $S$ is the
+/// integral of the absolute value of the integrand's terms (the natural stress scale at
+/// that point, so that points where the stress passes through zero do not demand an
+/// impossible relative accuracy).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StressConfig {
+    /// Requested accuracy (`tol.rel` is relative to the stress scale $S$).
+    pub tol: Tolerance,
+    /// Subdivision limit of the adaptive Gauss–Kronrod integrator.
+    pub max_subdivisions: usize,
+}
+
+impl Default for StressConfig {
+    /// $10^{-12}$ relative, at most 200 subintervals.
+    fn default() -> Self {
+        StressConfig { tol: Tolerance { abs: 0.0, rel: 1e-12 }, max_subdivisions: 200 }
+    }
+}

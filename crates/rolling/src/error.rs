@@ -1,0 +1,69 @@
+//! The crate's error type.
+
+use stickslip_quad::QuadError;
+
+/// Everything that can go wrong in this crate.
+///
+/// Physical regimes (full slip, full stick, the elastic limit) are *results*, never errors:
+/// only inputs outside the model's domain, parameter combinations whose derived scales are not
+/// representable in `f64`, and failed stress quadratures are reported here.
+#[non_exhaustive]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Error {
+    /// An input lies outside the domain of the model.
+    #[error("{name} = {value} is out of domain (allowed: {allowed})")]
+    OutOfDomain {
+        /// Name of the offending input.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// Human-readable statement of the allowed range.
+        allowed: &'static str,
+    },
+    /// A derived quantity (a length scale, a Bessel argument, a result) is not a finite,
+    /// normal `f64` for this combination of otherwise valid inputs.
+    #[error("{quantity} = {value} is not representable for these parameters")]
+    NonFinite {
+        /// Which derived quantity.
+        quantity: &'static str,
+        /// Its value (infinite, NaN, zero or subnormal).
+        value: f64,
+    },
+    /// A stress quadrature (eq 12 or 13) did not reach the requested tolerance.
+    #[error("quadrature of the {quantity} at x = {x} failed: {source}")]
+    Quadrature {
+        /// `"pressure"` or `"shear"`.
+        quantity: &'static str,
+        /// Abscissa in the contact \[m\].
+        x: f64,
+        /// The integrator's report (carries the best estimate when not converged).
+        source: QuadError,
+    },
+}
+
+/// Check that `value` is finite and strictly positive.
+pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64, Error> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::OutOfDomain { name, value, allowed: "finite, > 0" })
+    }
+}
+
+/// Check that a derived quantity is a finite normal positive number.
+pub(crate) fn normal(quantity: &'static str, value: f64) -> Result<f64, Error> {
+    if value.is_finite() && value >= f64::MIN_POSITIVE {
+        Ok(value)
+    } else {
+        Err(Error::NonFinite { quantity, value })
+    }
+}
+
+/// Check that a result is finite.
+pub(crate) fn finite(quantity: &'static str, value: f64) -> Result<f64, Error> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NonFinite { quantity, value })
+    }
+}
