@@ -44,7 +44,13 @@ fn bench(c: &mut Criterion) {
         let rows = table(name);
         let max_err = rows
             .iter()
-            .map(|&(x, want)| if f(x) == want { 0.0 } else { ((f(x) - want) / want.abs().max(f64::MIN_POSITIVE)).abs() })
+            .map(|&(x, want)| {
+                if f(x) == want {
+                    0.0
+                } else {
+                    ((f(x) - want) / want.abs().max(f64::MIN_POSITIVE)).abs()
+                }
+            })
             .fold(0.0_f64, f64::max);
         println!("accuracy {name:<18} max rel err {max_err:.2e} over {} golden points", rows.len());
         let xs: Vec<f64> = rows.iter().map(|r| r.0).collect();
