@@ -10,7 +10,7 @@
 //! Each type is a validated parameter set (`new(..) -> Result`). The tangential load ratio
 //! $t = T/(fP)$ must lie in $[0, 1]$: $t = 1$ is impending gross slip (stick zone of radius
 //! zero, finite compliance); $t > 1$ has no partial-slip solution and is an
-//! [`Error::OutOfDomain`](crate::Error::OutOfDomain). The grid solver in
+//! [`Error::OutOfDomain`]. The grid solver in
 //! [`crate::solve`] reports loads beyond gross slip as a result instead.
 
 mod cattaneo;
