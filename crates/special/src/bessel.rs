@@ -5,7 +5,7 @@
 //! scaled functions plus small-argument series where those underflow or overflow.
 //! Series: A&S 9.6.10-9.6.13 (DLMF 10.25.2, 10.31.1-2).
 
-use crate::error::{out_of_domain, Error};
+use crate::error::{no_overflow, out_of_domain, Error};
 use spec_math::cephes64 as ceph;
 
 /// Euler's constant $\gamma$.
@@ -14,6 +14,10 @@ const EULER: f64 = 0.577_215_664_901_532_9;
 /// $e^{x}$ split as $e^{x/2}e^{x/2}$ applied to `s`, so that $s\,e^{x}$ is finite
 /// whenever the product is.
 fn times_exp(s: f64, x: f64) -> f64 {
+    if x == f64::INFINITY {
+        // I0 and I1 grow without bound; the scaled value is 0 there and 0 * inf would be NaN.
+        return f64::INFINITY;
+    }
     if x < 700.0 {
         s * x.exp()
     } else {
@@ -211,11 +215,12 @@ macro_rules! checked_twin {
         $(#[$m])*
         ///
         /// # Errors
-        /// [`Error::OutOfDomain`] when the argument is NaN or outside the domain.
+        /// [`Error::OutOfDomain`] when the argument is NaN or outside the domain;
+        /// [`Error::Overflow`] when a finite argument's value exceeds `f64::MAX`.
         pub fn $name(x: f64) -> Result<f64, Error> {
             let ok: fn(f64) -> bool = $ok;
             if ok(x) {
-                Ok($f(x))
+                no_overflow($label, x, $f(x))
             } else {
                 Err(out_of_domain($label, x, $allowed))
             }

@@ -7,7 +7,7 @@
 //! - the recurrence $\Gamma(x+1)=x\Gamma(x)$ (DLMF 5.5.1) and the reflection formula
 //!   $\Gamma(x)\Gamma(-x) = -\pi/(x\sin\pi x)$ (DLMF 5.5.3).
 
-use crate::error::{out_of_domain, Error};
+use crate::error::{no_overflow, out_of_domain, Error};
 use crate::gamma_coeffs::{LNGAMMA_AT1, LNGAMMA_AT2, STIRLING};
 use std::f64::consts::PI;
 
@@ -169,7 +169,7 @@ pub fn checked_gamma(x: f64) -> Result<f64, Error> {
     if x.is_nan() || (x <= 0.0 && x == x.floor()) {
         return Err(out_of_domain("gamma", x, "real x not in {0, -1, -2, ...}, not NaN or -inf"));
     }
-    Ok(gamma(x))
+    no_overflow("gamma", x, gamma(x))
 }
 
 /// Logarithm of the Gamma function, $\ln\Gamma(x)$ for $x > 0$.
@@ -199,5 +199,5 @@ pub fn checked_ln_gamma(x: f64) -> Result<f64, Error> {
     if x.is_nan() || x <= 0.0 {
         return Err(out_of_domain("ln_gamma", x, "x > 0"));
     }
-    Ok(ln_gamma(x))
+    no_overflow("ln_gamma", x, ln_gamma(x))
 }

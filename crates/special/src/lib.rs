@@ -4,8 +4,9 @@
 //!
 //! This crate knows nothing about contact mechanics. Every function is a plain
 //! `f64 -> f64` that returns NaN outside its domain; each has a `checked_` twin returning
-//! [`Error::OutOfDomain`] instead (overflow of a true value beyond `f64::MAX` is *not* an
-//! error: the result is $\pm\infty$ and the thresholds are documented below).
+//! [`Error::OutOfDomain`] instead. Where the true value of a finite argument exceeds
+//! `f64::MAX` (thresholds documented below) the plain function returns $\pm\infty$ and the
+//! checked twin returns [`Error::Overflow`], pointing to the scaled or logarithmic form.
 //!
 //! ```
 //! use stickslip_special::{ellipk, gamma, bessel_k0_over_k1};

@@ -54,3 +54,30 @@ fn checked_twins_reject_bad_input() {
     let msg = sp::checked_ellipk(2.0).unwrap_err().to_string();
     assert!(msg.contains("ellipk") && msg.contains("m < 1"), "{msg}");
 }
+
+/// A finite in-domain argument whose true value exceeds `f64::MAX`: the plain function returns
+/// infinity (documented), the checked twin says so with [`sp::Error::Overflow`].
+#[test]
+fn overflow_is_an_error_in_checked_twins() {
+    type F = fn(f64) -> Result<f64, sp::Error>;
+    let cases: [(&str, F, f64); 5] = [
+        ("gamma", sp::checked_gamma, 171.7),
+        ("gamma", sp::checked_gamma, 1e10),
+        ("bessel_i0", sp::checked_bessel_i0, 714.0),
+        ("bessel_i1", sp::checked_bessel_i1, -800.0),
+        ("ln_gamma", sp::checked_ln_gamma, 1e307),
+    ];
+    for (name, f, x) in cases {
+        match f(x) {
+            Err(sp::Error::Overflow { name: n, value }) => assert!(n == name && value == x),
+            other => panic!("{name}({x:e}) gave {other:?}, expected Overflow"),
+        }
+    }
+    // Just below the thresholds the values are finite and pass.
+    assert!(sp::checked_gamma(171.6).unwrap().is_finite());
+    assert!(sp::checked_bessel_i0(713.9).unwrap().is_finite());
+    // Infinite arguments are limits, not overflow: I0(inf) = inf.
+    assert_eq!(sp::checked_bessel_i0(f64::INFINITY), Ok(f64::INFINITY));
+    assert_eq!(sp::bessel_i0(f64::NEG_INFINITY), f64::INFINITY);
+    assert_eq!(sp::bessel_i1(f64::NEG_INFINITY), f64::NEG_INFINITY);
+}
