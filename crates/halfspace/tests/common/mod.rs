@@ -5,6 +5,10 @@ pub mod quad;
 
 /// Test tolerances, each with its reason.
 pub mod tol {
+    /// Rectangle influence coefficients against a 24x24 Gauss product rule at d/h >= 3, where
+    /// both are accurate to rounding: the corner sums lose eps (d/h)^2 up to the switch at
+    /// 6 element sizes (8e-15), the 6x6 far-field rule beyond it is exact to ~1e-16.
+    pub const FAR_FIELD: f64 = 2e-14;
     /// Closed form against closed form (two algebraically equal expressions): a few hundred
     /// ulps of relative error from the different operation orders.
     pub const IDENTITY: f64 = 1e-13;
