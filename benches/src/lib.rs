@@ -1,5 +1,16 @@
-//! Criterion benches for stickslip live in `benches/`; this library is empty on purpose.
+//! What accuracy costs in time, for every numerical method of stickslip.
 //!
-//! Every bench measures time *and* prints the accuracy it buys (against the same independent
-//! references the tests use), because a fast wrong answer is not a result. Run with
-//! `cargo bench -p stickslip-benches`.
+//! - [`accuracy`]: the accuracy-versus-time report (library form, no criterion): for each method
+//!   and each setting of its accuracy knob, the error against an *independent* reference and the
+//!   time, measured in the same run, written as `accuracy.md` with one log-log Pareto plot per
+//!   method. The command `stickslip accuracy` and the binary `accuracy` of this package call it.
+//! - [`data`]: the reference tables the report measures against (mpmath tables committed by the
+//!   physics crates), embedded at compile time so the report runs from any directory.
+//! - The criterion benches in `benches/` measure time by problem size and print the accuracy
+//!   each setting buys beside it, because a fast wrong answer is not a result
+//!   (`cargo bench -p stickslip-benches`).
+//! - The hard-case stability suite is `tests/stability.rs`; its case list is
+//!   `docs/hard-cases.md`.
+
+pub mod accuracy;
+pub mod data;
