@@ -19,6 +19,10 @@ pub enum ErrorKind {
     OutOfRange,
     /// A combination that cannot be solved as asked (T > fP with partial slip, ...).
     Impossible,
+    /// A valid scene that no solver in this version handles (a graded sphere, ...).
+    Unsupported,
+    /// A physics routine failed on a scene that passed validation.
+    Solver,
 }
 
 /// A problem with a scene, located as precisely as the input allows.

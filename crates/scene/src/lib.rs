@@ -5,16 +5,39 @@
 //! place (with the CLI) that knows about units, TOML and files; the physics crates work on
 //! plain SI numbers.
 //!
-//! Written so far: [`units`] (quantities with units to SI) and [`Scene`] (parsing and
-//! validation, with errors naming file, line, column, key and what is allowed). The effect
-//! planner and `run(scene)` are still to come (issue 10).
+//! - [`units`]: quantities with units to SI;
+//! - [`Scene`]: parsing and validation, with errors naming file, line, column, key and what is
+//!   allowed, including the combinations the planner refuses;
+//! - [`plan`]: the effect planner ([`Plan`]): effects on/off with reasons, the technique per
+//!   effect (closed form where one applies), the estimated cost; `explain` prints it;
+//! - [`run()`]: the one code path from a scene to an [`Outcome`] (result.json), dispatching to
+//!   the physics crates for the effects that are on and nothing else ([`Evaluations`] counts
+//!   what ran);
+//! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing.
+//!
+//! ```no_run
+//! use stickslip_scene::{run, RunOptions, Scene};
+//! let scene = Scene::default_scene();
+//! let out = run(&scene, &RunOptions::default()).unwrap();
+//! println!("a = {} m, P = {} N/m", out.contact.a, out.contact.normal_load);
+//! ```
 
 mod error;
+mod output;
+pub mod plan;
+mod plots;
 mod raw;
+mod run;
 mod scene;
 pub mod units;
 
 pub use error::{ErrorKind, SceneError};
+pub use output::{write_outputs, Written};
+pub use plan::{Cost, Effect, EffectPlan, Plan, Technique};
+pub use run::{
+    run, ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, Outcome, Progress,
+    RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
+};
 pub use scene::{
     Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
     NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Substrate, DEFAULT_SCENE,

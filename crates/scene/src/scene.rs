@@ -359,6 +359,7 @@ sliding = true
 [outputs]
 surface = true
 field = { x = [-1.5, 1.5, 61], y = [0.02, 2.0, 40], scale = "a" }
+plots = true
 "#;
 
 struct Ctx<'a> {
@@ -947,8 +948,8 @@ fn convert(cx: &Ctx<'_>, raw: RawScene) -> Result<Scene, SceneError> {
     let outputs = convert_outputs(cx, raw.outputs.as_ref())?;
     let solver = convert_solver(cx, raw.solver.as_ref())?;
 
-    Ok(Scene {
-        title: raw.title.unwrap_or_else(|| "untitled scene".to_string()),
+    let scene = Scene {
+        title: raw.title.clone().unwrap_or_else(|| "untitled scene".to_string()),
         file: cx.file.clone(),
         geometry,
         substrate,
@@ -957,6 +958,48 @@ fn convert(cx: &Ctx<'_>, raw: RawScene) -> Result<Scene, SceneError> {
         motion,
         outputs,
         solver,
+    };
+    // Combinations no solver handles, and checks that need the contact size, are refused
+    // here, located at the key the planner names.
+    let issue = match crate::plan::build(&scene) {
+        Err(i) => Some(i),
+        Ok(_) => crate::run::pre_check(&scene),
+    };
+    if let Some(i) = issue {
+        let span = key_span(&raw, i.key);
+        return Err(cx.err(i.kind, i.key, span, i.message).hint(i.hint));
+    }
+    Ok(scene)
+}
+
+/// Byte span of a dotted key (or of its table) in the source, for the planner's refusals.
+fn key_span(raw: &RawScene, key: &str) -> Option<Range<usize>> {
+    let g = raw.geometry.get_ref();
+    let s = raw.substrate.get_ref();
+    let l = raw.load.get_ref();
+    let exact = match key {
+        "geometry.kind" => Some(g.kind.span()),
+        "substrate.model" => Some(s.model.span()),
+        "indenter.model" => raw.indenter.as_ref().map(|i| i.get_ref().model.span()),
+        "load.normal" => l.normal.as_ref().map(Spanned::span),
+        "load.half_width" => l.half_width.as_ref().map(Spanned::span),
+        "load.tangential" => l.tangential.as_ref().map(Spanned::span),
+        "load.friction" => l.friction.as_ref().map(Spanned::span),
+        "load.moment" => l.moment.as_ref().map(Spanned::span),
+        "motion.kind" => raw.motion.as_ref().map(|m| m.get_ref().kind.span()),
+        "outputs.field" => raw.outputs.as_ref().and_then(|o| o.field.as_ref()).map(Spanned::span),
+        "outputs.cycle" => raw.outputs.as_ref().and_then(|o| o.cycle.as_ref()).map(Spanned::span),
+        "solver.method" => raw.solver.as_ref().and_then(|s| s.method.as_ref()).map(Spanned::span),
+        "solver.grid" => raw.solver.as_ref().and_then(|s| s.grid.as_ref()).map(Spanned::span),
+        _ => None,
+    };
+    exact.or_else(|| match key.split('.').next() {
+        Some("geometry") => Some(raw.geometry.span()),
+        Some("substrate") => Some(raw.substrate.span()),
+        Some("load") => Some(raw.load.span()),
+        Some("indenter") => raw.indenter.as_ref().map(Spanned::span),
+        Some("motion") => raw.motion.as_ref().map(Spanned::span),
+        _ => None,
     })
 }
 
@@ -1055,7 +1098,7 @@ fn convert_solver(
     cx: &Ctx<'_>,
     s: Option<&crate::raw::RawSolver>,
 ) -> Result<SolverOptions, SceneError> {
-    let mut out = SolverOptions { method: Method::Auto, grid: 64, tolerance: 1e-10 };
+    let mut out = SolverOptions { method: Method::Auto, grid: 32, tolerance: 1e-10 };
     let Some(s) = s else { return Ok(out) };
     if let Some(m) = &s.method {
         out.method = match cx.choice(

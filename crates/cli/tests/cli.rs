@@ -1,0 +1,136 @@
+//! The built `stickslip` binary: the default run (under 10 s, real results), explain, JSON
+//! on stdout, and bad input (a file that does not exist, a malformed scene, an impossible
+//! scene, a directory that cannot be written): non-zero exit, the error names file, line,
+//! column and key, and no output file is left behind.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::Instant;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_stickslip"))
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("stickslip-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn text(o: &Output) -> (String, String) {
+    (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+fn entries(d: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(d)
+        .map(|r| {
+            r.filter_map(|e| e.ok()).map(|e| e.file_name().to_string_lossy().into_owned()).collect()
+        })
+        .unwrap_or_default();
+    v.sort();
+    v
+}
+
+#[test]
+fn default_run_writes_real_results_in_under_ten_seconds() {
+    let d = tmp("default");
+    let out = d.join("out");
+    let t0 = Instant::now();
+    let o = bin().args(["run", "--out"]).arg(&out).output().unwrap();
+    let secs = t0.elapsed().as_secs_f64();
+    let (so, se) = text(&o);
+    println!("{so}{se}default run: {secs:.3} s");
+    assert!(o.status.success());
+    assert!(secs < 10.0, "{secs}");
+    let files = entries(&out);
+    println!("{files:?}");
+    for f in [
+        "result.json",
+        "surface.csv",
+        "field.csv",
+        "pressure.svg",
+        "traction.svg",
+        "stick_slip.svg",
+        "displacement.svg",
+        "field_sxx.svg",
+    ] {
+        assert!(files.contains(&f.to_string()), "{f} missing");
+    }
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).unwrap()).unwrap();
+    let p = v["contact"]["normal_load"].as_f64().unwrap();
+    assert!((p / (986.39 * 9.80665) - 1.0).abs() < 1e-5, "{p}");
+    assert_eq!(v["field"]["sxx"].as_array().unwrap().len(), 40);
+    assert!(entries(&d).iter().all(|n| !n.contains("tmp")));
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn json_goes_to_stdout_and_explain_computes_nothing() {
+    let o = bin().args(["run", "--json"]).output().unwrap();
+    assert!(o.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for k in [
+        "title",
+        "effects",
+        "contact",
+        "zones",
+        "forces",
+        "rigid_displacement",
+        "surface",
+        "field",
+        "solver",
+    ] {
+        assert!(v.get(k).is_some(), "{k}");
+    }
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/seed002_ex1_lp.toml");
+    let o = bin().arg("explain").arg(&scene).output().unwrap();
+    let (so, _) = text(&o);
+    println!("{so}");
+    assert!(o.status.success());
+    assert!(
+        so.contains("effects off") && so.contains("modified LP") && so.contains("estimated cost")
+    );
+}
+
+#[test]
+fn bad_input_exits_non_zero_with_location_and_leaves_nothing() {
+    let d = tmp("bad");
+    let out = d.join("out");
+    // a file that does not exist
+    let o = bin().args(["run", "/nonexistent/scene.toml", "--out"]).arg(&out).output().unwrap();
+    let (_, se) = text(&o);
+    println!("{se}");
+    assert!(!o.status.success());
+    assert!(se.contains("/nonexistent/scene.toml"));
+    // a malformed scene: nu > 0.5 on line 7
+    let bad = d.join("bad.toml");
+    std::fs::write(&bad, "[geometry]\nkind = \"sphere\"\nradius = 0.01\n[substrate]\nmodel = \"homogeneous\"\ne = 1e9\nnu = 0.6\n[load]\nnormal = 10.0\n").unwrap();
+    let o = bin().arg("run").arg(&bad).arg("--out").arg(&out).output().unwrap();
+    let (_, se) = text(&o);
+    println!("{se}");
+    assert!(!o.status.success());
+    assert!(se.contains("bad.toml:7:6"), "{se}");
+    assert!(se.contains("substrate.nu") && se.contains("hint"));
+    // an impossible scene: T > f P with the load given as a half-width
+    let imp = d.join("impossible.toml");
+    std::fs::write(&imp, "[geometry]\nkind = \"cylinder\"\nradius = 0.3\n[substrate]\nmodel = \"graded\"\ne0 = \"1767600 kgf/m^2.1\"\nk = 0.1\nnu = 0.3\n[load]\nhalf_width = 0.0178\nfriction = 0.5\ntangential = 5000.0\n").unwrap();
+    let o = bin().arg("run").arg(&imp).arg("--out").arg(&out).output().unwrap();
+    let (_, se) = text(&o);
+    println!("{se}");
+    assert!(!o.status.success());
+    assert!(se.contains("impossible.toml:12:") && se.contains("load.tangential"), "{se}");
+    // a directory that cannot be written (its parent is a regular file)
+    let o = bin().arg("run").arg("--out").arg(bad.join("out")).output().unwrap();
+    let (_, se) = text(&o);
+    println!("{se}");
+    assert!(!o.status.success());
+    assert!(se.contains("cannot write"));
+    // nothing was left behind
+    assert_eq!(entries(&d), vec!["bad.toml".to_string(), "impossible.toml".to_string()]);
+    let _ = std::fs::remove_dir_all(&d);
+}
