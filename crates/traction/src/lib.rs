@@ -13,12 +13,14 @@
 
 pub mod closed;
 pub mod error;
+pub mod fast;
 pub mod grid;
 pub mod influence;
 pub mod lp;
 pub mod solve;
 
 pub use error::{Error, Result};
+pub use fast::{FastConfig, FastLoad, FastProblem, FastSolution, TractionDirections};
 pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
 pub use influence::InfluenceModel;
 pub use lp::{LpConfig, LpSolution};

@@ -302,3 +302,27 @@ fn lubkin_rigid_rotation_by_quadrature() {
     }
     println!("Lubkin: max rel |u_theta/(omega r) - 1| over the stick disc {worst:.3e}");
 }
+
+/// `k_minus_e` (now `m * ellipd(m)`, with the logarithmic expansion for k'^2 < 1e-6)
+/// against mpmath (`scripts/traction_k_minus_e.py`, mp.dps = 40).
+#[test]
+fn k_minus_e_against_mpmath() {
+    let text = include_str!("data/k_minus_e.tsv");
+    let (mut max, mut sum2, mut rows, mut worst) = (0.0_f64, 0.0, 0usize, 0.0);
+    for line in text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()) {
+        let mut it = line.split('\t');
+        let kp2: f64 = it.next().unwrap().parse().unwrap();
+        let want: f64 = it.next().unwrap().parse().unwrap();
+        let got = stickslip_traction::closed::k_minus_e(kp2);
+        let err = if want == 0.0 { got.abs() } else { (got / want - 1.0).abs() };
+        if err > max {
+            worst = kp2;
+        }
+        max = max.max(err);
+        sum2 += err * err;
+        rows += 1;
+    }
+    let rms = (sum2 / rows as f64).sqrt();
+    println!("k_minus_e: {rows} rows, max rel error {max:.2e} (k'^2 = {worst:e}), RMS {rms:.2e}");
+    assert!(max < tol::K_MINUS_E, "{max}");
+}

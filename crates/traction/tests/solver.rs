@@ -7,7 +7,7 @@ use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOutcome};
 use std::time::Instant;
 use stickslip_traction::closed::Lubkin;
 use stickslip_traction::influence::projected_matrix;
-use stickslip_traction::lp::{modified_lp, LpConfig};
+use stickslip_traction::lp::{modified_lp, modified_lp_reference, LpConfig};
 use stickslip_traction::{
     ContactGrid, ElementState, InfluenceModel, Load, Patch, PatchPressure, Regime, Shape,
     TractionProblem, TractionSolution,
@@ -293,5 +293,41 @@ fn timings() {
             sol.info.iterations
         );
         assert!(r < tol::LP_RESIDUAL);
+    }
+}
+
+/// The condensed tableau must reproduce the plain full tableau pivot for pivot: same pivot
+/// count, same refusals, and the same answer to the last bit (the arithmetic is the same).
+#[test]
+fn condensed_tableau_matches_full_tableau() {
+    let s = steel();
+    let c = stickslip_halfspace::rectangle::Compliance::pair(&s, &s);
+    let cases: Vec<(&str, ContactGrid, f64)> = vec![
+        (
+            "Hertz circle 10 across",
+            ContactGrid::hertz_circle(0.046148, 2160.0, 10).unwrap(),
+            0.6667,
+        ),
+        ("square 10x10 uniform", ContactGrid::uniform_square(1.0, 1e4, 10).unwrap(), 0.8),
+        ("ellipse 16x8", ContactGrid::hertz_ellipse(0.1, 0.05, 800.0, 16, 8).unwrap(), 0.95),
+        ("Hertz circle 20 across", ContactGrid::hertz_circle(0.05, 1000.0, 20).unwrap(), 0.3),
+    ];
+    for (name, grid, ratio) in cases {
+        let n = grid.len();
+        let cap: Vec<f64> = grid.normal_force().iter().map(|p| 0.12 * p).collect();
+        let load = ratio * cap.iter().sum::<f64>();
+        let a = projected_matrix(&grid, &c, InfluenceModel::ExactRectangle, &vec![(1.0, 0.0); n]);
+        let g = vec![1.0; n];
+        let t0 = Instant::now();
+        let fast = modified_lp(&a, &g, &cap, load, &LpConfig::default()).unwrap();
+        let t_fast = t0.elapsed().as_secs_f64();
+        let t0 = Instant::now();
+        let plain = modified_lp_reference(&a, &g, &cap, load, &LpConfig::default()).unwrap();
+        let t_plain = t0.elapsed().as_secs_f64();
+        println!(
+            "{name}: N = {n}, pivots {} / {}, refused {} / {}, condensed {t_fast:.4} s, full {t_plain:.4} s",
+            fast.iterations, plain.iterations, fast.rejected_entries, plain.rejected_entries
+        );
+        assert_eq!(fast, plain, "{name}");
     }
 }

@@ -18,39 +18,17 @@ pub enum LoadAxis {
 /// $e^2 = 1 - b_{\min}^2/a_{\max}^2$ and $K$, $E$ of parameter $m = e^2$:
 /// $$\Lambda_{\text{major}} = (1-\nu)K + \nu\frac{K-E}{e^2},\qquad
 ///   \Lambda_{\text{minor}} = (1-\nu)K + \nu\frac{E-(1-e^2)K}{e^2}.$$
-/// Both tend to $\pi(2-\nu)/4$ for a circle (Mindlin). $(K-E)/e^2$ is evaluated by its
-/// power series for small $e^2$ (no cancellation); `e2` must lie in $[0, 1)$.
+/// Both tend to $\pi(2-\nu)/4$ for a circle (Mindlin). $(K-E)/e^2$ is
+/// `stickslip_special::ellipd` (Carlson's $R_D$, no cancellation as $e^2 \to 0$); `e2`
+/// must lie in $[0, 1)$.
 #[must_use]
 pub fn cattaneo_lambda(e2: f64, nu: f64, axis: LoadAxis) -> f64 {
     let k = stickslip_special::ellipk(e2);
-    let kme_over_m = k_minus_e_over_m(e2);
+    let kme_over_m = stickslip_special::ellipd(e2);
     match axis {
         LoadAxis::Major => (1.0 - nu) * k + nu * kme_over_m,
         // (E - (1-m)K)/m = K - (K-E)/m.
         LoadAxis::Minor => (1.0 - nu) * k + nu * (k - kme_over_m),
-    }
-}
-
-/// $(K(m) - E(m))/m$, by the series $\frac{\pi}{2}\sum_{n\ge1} c_n^2\frac{2n}{2n-1}m^{n-1}$,
-/// $c_n = \binom{2n}{n}/4^n$ (DLMF 19.5.1–19.5.2) when $m < 0.2$, directly otherwise.
-pub(crate) fn k_minus_e_over_m(m: f64) -> f64 {
-    if m < 0.2 {
-        let mut c = 1.0; // c_0
-        let mut pow = 1.0;
-        let mut sum = 0.0;
-        for n in 1..200 {
-            let nf = n as f64;
-            c *= (2.0 * nf - 1.0) / (2.0 * nf);
-            let term = c * c * (2.0 * nf / (2.0 * nf - 1.0)) * pow;
-            sum += term;
-            if term < 1e-18 * sum {
-                break;
-            }
-            pow *= m;
-        }
-        0.5 * PI * sum
-    } else {
-        (stickslip_special::ellipk(m) - stickslip_special::ellipe(m)) / m
     }
 }
 

@@ -1,6 +1,5 @@
 //! Lubkin's torsion of a Hertz circle with a slip annulus.
 
-use super::cattaneo::k_minus_e_over_m;
 use crate::error::{positive, Error, Result};
 use std::f64::consts::PI;
 use stickslip_halfspace::Material;
@@ -8,18 +7,15 @@ use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 
 /// $K(k) - E(k)$ of the modulus $k$ given through the complementary parameter
 /// $k'^2 = 1 - k^2 \in [0, 1]$ (so both ends keep relative accuracy):
-/// a power series for $k^2 < 0.2$, the logarithmic expansion
+/// $m\,D(m)$ with $m = k^2$ and $D = (K-E)/m$ from `stickslip_special::ellipd` (no
+/// cancellation as $k \to 0$), and the logarithmic expansion
 /// $K \approx L + \tfrac{k'^2}{4}(L - 1)$, $E \approx 1 + \tfrac{k'^2}{2}(L - \tfrac12)$,
-/// $L = \ln(4/k')$ (DLMF 19.12.1–19.12.2) for $k'^2 < 10^{-6}$, and
-/// `stickslip_special::{ellipk, ellipe}` otherwise. $+\infty$ at $k'^2 = 0$.
+/// $L = \ln(4/k')$ (DLMF 19.12.1–19.12.2) for $k'^2 < 10^{-6}$, where forming
+/// $m = 1 - k'^2$ would lose the digits of $k'^2$. $+\infty$ at $k'^2 = 0$.
 #[must_use]
 pub fn k_minus_e(kp2: f64) -> f64 {
     if kp2 <= 0.0 {
         return f64::INFINITY;
-    }
-    let m = 1.0 - kp2;
-    if m < 0.2 {
-        return m * k_minus_e_over_m(m);
     }
     if kp2 < 1e-6 {
         let l = (16.0 / kp2).ln() * 0.5;
@@ -27,18 +23,15 @@ pub fn k_minus_e(kp2: f64) -> f64 {
         let e = 1.0 + 0.5 * kp2 * (l - 0.5);
         return k - e;
     }
-    stickslip_special::ellipk(m) - stickslip_special::ellipe(m)
+    let m = 1.0 - kp2;
+    m * stickslip_special::ellipd(m)
 }
 
 /// $2E(k) - K(k)$ with $k'^2 = 1 - k^2$ given (as [`k_minus_e`]).
 fn two_e_minus_k(kp2: f64) -> f64 {
+    // 2E - K = E - (K - E); K - E from ellipd keeps its digits as m -> 0.
     let m = 1.0 - kp2;
-    if m < 0.2 {
-        // 2E - K = E - (K - E).
-        stickslip_special::ellipe(m) - m * k_minus_e_over_m(m)
-    } else {
-        2.0 * stickslip_special::ellipe(m) - stickslip_special::ellipk(m)
-    }
+    stickslip_special::ellipe(m) - m * stickslip_special::ellipd(m)
 }
 
 fn quad_cfg() -> AdaptiveConfig {

@@ -1,0 +1,397 @@
+//! The tangential influence operator of a contact grid as a zero-padded FFT convolution.
+//!
+//! On a uniform lattice the in-plane displacement at element $k$ due to uniform traction
+//! $\mathbf q_j$ on element $j$ depends only on the lattice offset $(i_k - i_j, j_k - j_j)$:
+//! $$u_a(k) = \sum_j K_{ab}(\mathbf i_k - \mathbf i_j)\,q_b(j),\qquad a, b \in \{x, y\},$$
+//! with $K$ the exact uniform-rectangle tensor per unit traction (FORMULAS.md F, tensor form
+//! and element-to-point formula; [`crate::influence::tensor`] times the element area). The
+//! half-space is not periodic, so the kernel is laid out for offsets $-(n-1)\dots n-1$ on a
+//! circular array of size $M \ge 2n - 1$ per axis and the traction is zero-padded: the
+//! circular convolution of the padded arrays equals the linear one on the lattice
+//! (the standard aperiodic FFT convolution, e.g. Liu, Wang & Liu 2000, *Wear* 243, "DC-FFT").
+//!
+//! $K_{xx}$, $K_{yy}$ are even in both offsets and $K_{xy}$ is odd in both, so all three
+//! spectra are real; only their real parts are stored. One product costs two forward and two
+//! inverse real 2D FFTs of size $M_x\times M_y$: $O(N\log N)$.
+
+use crate::error::{Error, Result};
+use crate::grid::ContactGrid;
+use crate::influence::{tensor, Compliance, InfluenceModel};
+use rayon::prelude::*;
+use realfft::num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rustfft::{Fft, FftPlanner};
+use std::sync::Arc;
+
+type C64 = Complex<f64>;
+
+/// Smallest even 5-smooth integer $\ge n$ (fast FFT sizes for rustfft/realfft).
+fn fast_size(n: usize) -> usize {
+    let mut m = n.max(2);
+    loop {
+        if m % 2 == 0 {
+            let mut r = m;
+            for p in [2, 3, 5] {
+                while r % p == 0 {
+                    r /= p;
+                }
+            }
+            if r == 1 {
+                return m;
+            }
+        }
+        m += 1;
+    }
+}
+
+/// The planned convolution operator $\mathbf u = K * \mathbf q$ of one contact grid.
+///
+/// Built once per grid and pair of bodies ([`TensorConvolution::new`]); owns the FFT plans and
+/// the three kernel spectra. [`TensorConvolution::apply`] takes caller-owned scratch
+/// ([`TensorConvolution::make_scratch`]) and allocates only the few-kilobyte per-thread FFT
+/// work buffers of the rayon tasks.
+pub struct TensorConvolution {
+    n: usize,
+    nx: usize,
+    ny: usize,
+    mx: usize,
+    my: usize,
+    /// $M_x/2 + 1$.
+    mxh: usize,
+    /// Lattice cell `j * nx + i` of each element.
+    cell: Vec<usize>,
+    /// Real spectra of $K_{xx}, K_{xy}, K_{yy}$, layout `[i * my + j]`, $i < M_x/2+1$.
+    kxx: Vec<f64>,
+    kxy: Vec<f64>,
+    kyy: Vec<f64>,
+    /// Kernel at zero offset, `[Kxx, Kxy, Kyy]` (per unit traction).
+    self_term: [f64; 3],
+    r2c: Arc<dyn RealToComplex<f64>>,
+    c2r: Arc<dyn ComplexToReal<f64>>,
+    col_fwd: Arc<dyn Fft<f64>>,
+    col_inv: Arc<dyn Fft<f64>>,
+}
+
+impl std::fmt::Debug for TensorConvolution {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("TensorConvolution")
+            .field("elements", &self.n)
+            .field("lattice", &(self.nx, self.ny))
+            .field("fft", &(self.mx, self.my))
+            .finish_non_exhaustive()
+    }
+}
+
+/// Caller-owned work space of [`TensorConvolution::apply`].
+#[derive(Debug, Clone)]
+pub struct ConvScratch {
+    lat: [Vec<f64>; 2],
+    rowspec: [Vec<C64>; 2],
+    spec: [Vec<C64>; 2],
+}
+
+impl TensorConvolution {
+    /// Plan the operator of `grid` for the relative compliance `c` of the two bodies
+    /// ([`Compliance::pair`]).
+    ///
+    /// The kernel entries are [`crate::influence::tensor`] (exact rectangle by default, or the
+    /// seed's point-load model) times the element area, evaluated for one quadrant of offsets
+    /// and completed by the parity of the tensor.
+    ///
+    /// # Errors
+    /// [`Error::EmptyGrid`] for an empty grid; [`Error::OutOfDomain`] if an element centre is
+    /// not on the lattice of spacing $(h_x, h_y)$ through the lowest centre, or two elements
+    /// share a lattice cell.
+    pub fn new(grid: &ContactGrid, c: &Compliance, model: InfluenceModel) -> Result<Self> {
+        let n = grid.len();
+        if n == 0 {
+            return Err(Error::EmptyGrid { reason: "the grid has no element" });
+        }
+        let x0 = grid.x.iter().copied().fold(f64::INFINITY, f64::min);
+        let y0 = grid.y.iter().copied().fold(f64::INFINITY, f64::min);
+        let mut idx = Vec::with_capacity(n);
+        for k in 0..n {
+            let fi = (grid.x[k] - x0) / grid.hx;
+            let fj = (grid.y[k] - y0) / grid.hy;
+            let (i, j) = (fi.round(), fj.round());
+            if (fi - i).abs() > 1e-6 || (fj - j).abs() > 1e-6 {
+                return Err(Error::OutOfDomain {
+                    name: "element centre offset from the lattice (cells)",
+                    value: (fi - i).abs().max((fj - j).abs()),
+                    allowed: "<= 1e-6: all centres on one lattice of spacing (hx, hy)",
+                });
+            }
+            idx.push((i as usize, j as usize));
+        }
+        let nx = idx.iter().map(|p| p.0).max().unwrap_or(0) + 1;
+        let ny = idx.iter().map(|p| p.1).max().unwrap_or(0) + 1;
+        let cell: Vec<usize> = idx.iter().map(|&(i, j)| j * nx + i).collect();
+        {
+            let mut seen = vec![false; nx * ny];
+            for (k, &c) in cell.iter().enumerate() {
+                if seen[c] {
+                    return Err(Error::OutOfDomain {
+                        name: "element sharing a lattice cell (index)",
+                        value: k as f64,
+                        allowed: "one element per lattice cell",
+                    });
+                }
+                seen[c] = true;
+            }
+        }
+        let mx = fast_size(2 * nx - 1);
+        let my = fast_size(2 * ny - 1);
+        let mxh = mx / 2 + 1;
+        let mut rplan = RealFftPlanner::<f64>::new();
+        let mut cplan = FftPlanner::<f64>::new();
+        let mut op = Self {
+            n,
+            nx,
+            ny,
+            mx,
+            my,
+            mxh,
+            cell,
+            kxx: Vec::new(),
+            kxy: Vec::new(),
+            kyy: Vec::new(),
+            self_term: [0.0; 3],
+            r2c: rplan.plan_fft_forward(mx),
+            c2r: rplan.plan_fft_inverse(mx),
+            col_fwd: cplan.plan_fft_forward(my),
+            col_inv: cplan.plan_fft_inverse(my),
+        };
+
+        // Kernel tensors for offsets (di, dj) >= 0, from a two-element probe grid
+        // (field at the offset, source at the origin), times the element area.
+        let area = grid.element_area();
+        let (hx, hy) = (grid.hx, grid.hy);
+        let quad: Vec<[f64; 3]> = (0..ny)
+            .into_par_iter()
+            .flat_map_iter(|dj| {
+                let mut probe = ContactGrid {
+                    hx,
+                    hy,
+                    x: vec![0.0, 0.0],
+                    y: vec![dj as f64 * hy, 0.0],
+                    pressure: vec![0.0, 0.0],
+                    patch: vec![0, 0],
+                };
+                (0..nx)
+                    .map(|di| {
+                        probe.x[0] = di as f64 * hx;
+                        let (k, j) = if di == 0 && dj == 0 { (1, 1) } else { (0, 1) };
+                        let t = tensor(&probe, c, model, k, j);
+                        [t[0] * area, t[1] * area, t[2] * area]
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        op.self_term = quad[0];
+        let mut spectra: [Vec<f64>; 3] = [vec![], vec![], vec![]];
+        for (comp, out) in spectra.iter_mut().enumerate() {
+            // Parity: xx, yy even in both offsets; xy odd in both.
+            let odd = comp == 1;
+            let mut lat = vec![0.0; mx * my];
+            for dj in 0..ny {
+                for di in 0..nx {
+                    let v = quad[dj * nx + di][comp];
+                    for (sj, ej) in [(1.0, dj), (-1.0, (my - dj) % my)] {
+                        for (si, ei) in [(1.0, di), (-1.0, (mx - di) % mx)] {
+                            let s = if odd { si * sj } else { 1.0 };
+                            lat[ej * mx + ei] = s * v;
+                        }
+                    }
+                }
+            }
+            // Odd kernel: the zero-offset row and column are zero (the mirror writes of
+            // di = 0 or dj = 0 overwrite with -v = -0 there; keep them exactly 0).
+            if odd {
+                lat[..mx].fill(0.0);
+                for dj in 0..my {
+                    lat[dj * mx] = 0.0;
+                }
+            }
+            let mut rowspec = vec![C64::new(0.0, 0.0); my * mxh];
+            let mut spec = vec![C64::new(0.0, 0.0); mxh * my];
+            op.forward(
+                my,
+                |j, row| row.copy_from_slice(&lat[j * mx..(j + 1) * mx]),
+                &mut rowspec,
+                &mut spec,
+            );
+            *out = spec.iter().map(|z| z.re).collect();
+        }
+        let [kxx, kxy, kyy] = spectra;
+        op.kxx = kxx;
+        op.kxy = kxy;
+        op.kyy = kyy;
+        Ok(op)
+    }
+
+    /// Number of elements $N$.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    /// Whether the operator has no element (never true for a constructed operator).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// Lattice box $(n_x, n_y)$ spanned by the elements.
+    #[must_use]
+    pub fn lattice(&self) -> (usize, usize) {
+        (self.nx, self.ny)
+    }
+
+    /// Padded FFT size $(M_x, M_y)$, each the smallest even 5-smooth size $\ge 2n - 1$.
+    #[must_use]
+    pub fn fft_size(&self) -> (usize, usize) {
+        (self.mx, self.my)
+    }
+
+    /// Kernel at zero offset `[Kxx, Kxy, Kyy]`: displacement at an element's centre per unit
+    /// traction on itself (FORMULAS.md F self-term; $K_{xy} = 0$).
+    #[must_use]
+    pub fn self_term(&self) -> [f64; 3] {
+        self.self_term
+    }
+
+    /// Work space for [`TensorConvolution::apply`].
+    #[must_use]
+    pub fn make_scratch(&self) -> ConvScratch {
+        let z = C64::new(0.0, 0.0);
+        ConvScratch {
+            lat: [vec![0.0; self.nx * self.ny], vec![0.0; self.nx * self.ny]],
+            rowspec: [vec![z; self.ny * self.mxh], vec![z; self.ny * self.mxh]],
+            spec: [vec![z; self.mxh * self.my], vec![z; self.mxh * self.my]],
+        }
+    }
+
+    /// Row FFTs of `rows` real rows (the rest are zero), then column FFTs:
+    /// `spec[i * my + j]` is the 2D spectrum.
+    fn forward(
+        &self,
+        rows: usize,
+        fill: impl Fn(usize, &mut [f64]) + Sync,
+        rowspec: &mut [C64],
+        spec: &mut [C64],
+    ) {
+        let (mx, my, mxh) = (self.mx, self.my, self.mxh);
+        rowspec[..rows * mxh].par_chunks_mut(mxh).enumerate().for_each_init(
+            || (vec![0.0; mx], self.r2c.make_scratch_vec()),
+            |(row, scr), (j, out)| {
+                row.fill(0.0);
+                fill(j, row);
+                // Lengths are consistent by construction; realfft only errs on length.
+                let _ = self.r2c.process_with_scratch(row, out, scr);
+            },
+        );
+        spec.par_chunks_mut(my).enumerate().for_each_init(
+            || vec![C64::new(0.0, 0.0); self.col_fwd.get_inplace_scratch_len()],
+            |scr, (i, col)| {
+                for (j, v) in col.iter_mut().enumerate() {
+                    *v = if j < rows { rowspec[j * mxh + i] } else { C64::new(0.0, 0.0) };
+                }
+                self.col_fwd.process_with_scratch(col, scr);
+            },
+        );
+    }
+
+    /// Column inverse FFTs of `spec`, then inverse row FFTs of the first `ny` rows into
+    /// `lat` (row-major $n_y\times n_x$), scaled by $1/(M_xM_y)$.
+    fn inverse(&self, spec: &mut [C64], rowspec: &mut [C64], lat: &mut [f64]) {
+        let (mx, my, mxh, nx, ny) = (self.mx, self.my, self.mxh, self.nx, self.ny);
+        spec.par_chunks_mut(my).for_each_init(
+            || vec![C64::new(0.0, 0.0); self.col_inv.get_inplace_scratch_len()],
+            |scr, col| self.col_inv.process_with_scratch(col, scr),
+        );
+        let spec: &[C64] = spec;
+        let scale = 1.0 / (mx as f64 * my as f64);
+        rowspec[..ny * mxh]
+            .par_chunks_mut(mxh)
+            .zip(lat.par_chunks_mut(nx))
+            .enumerate()
+            .for_each_init(
+                || (vec![0.0; mx], self.c2r.make_scratch_vec()),
+                |(row, scr), (j, (rs, out))| {
+                    for (i, v) in rs.iter_mut().enumerate() {
+                        *v = spec[i * my + j];
+                    }
+                    // The DC and Nyquist bins of a real signal are real; clear the rounding.
+                    rs[0].im = 0.0;
+                    rs[mxh - 1].im = 0.0;
+                    let _ = self.c2r.process_with_scratch(rs, row, scr);
+                    for (o, r) in out.iter_mut().zip(row.iter()) {
+                        *o = r * scale;
+                    }
+                },
+            );
+    }
+
+    /// $\mathbf u = K * \mathbf q$: in-plane displacement at every element centre due to the
+    /// element tractions `(qx, qy)` (element order of the grid; lengths $N$).
+    ///
+    /// # Panics
+    /// If a slice length differs from $N$.
+    pub fn apply(
+        &self,
+        qx: &[f64],
+        qy: &[f64],
+        ux: &mut [f64],
+        uy: &mut [f64],
+        s: &mut ConvScratch,
+    ) {
+        assert!(qx.len() == self.n && qy.len() == self.n, "traction length");
+        assert!(ux.len() == self.n && uy.len() == self.n, "displacement length");
+        let nx = self.nx;
+        for (f, q) in [qx, qy].into_iter().enumerate() {
+            let lat = &mut s.lat[f];
+            lat.fill(0.0);
+            for (&c, &v) in self.cell.iter().zip(q) {
+                lat[c] = v;
+            }
+            let lat: &[f64] = lat;
+            self.forward(
+                self.ny,
+                |j, row| row[..nx].copy_from_slice(&lat[j * nx..(j + 1) * nx]),
+                &mut s.rowspec[f],
+                &mut s.spec[f],
+            );
+        }
+        {
+            let [sx, sy] = &mut s.spec;
+            sx.par_iter_mut()
+                .zip(sy.par_iter_mut())
+                .zip(self.kxx.par_iter().zip(self.kxy.par_iter()).zip(self.kyy.par_iter()))
+                .for_each(|((a, b), ((kxx, kxy), kyy))| {
+                    let (qa, qb) = (*a, *b);
+                    *a = qa * *kxx + qb * *kxy;
+                    *b = qa * *kxy + qb * *kyy;
+                });
+        }
+        for (f, u) in [ux, uy].into_iter().enumerate() {
+            self.inverse(&mut s.spec[f], &mut s.rowspec[f], &mut s.lat[f]);
+            for (o, &c) in u.iter_mut().zip(&self.cell) {
+                *o = s.lat[f][c];
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fast_sizes() {
+        assert_eq!(fast_size(399), 400);
+        assert_eq!(fast_size(3), 4);
+        assert_eq!(fast_size(127), 128);
+        assert_eq!(fast_size(799), 800);
+        assert_eq!(fast_size(13), 16);
+    }
+}
