@@ -142,17 +142,19 @@ fn cmd_run(scene: Option<&PathBuf>, out: Option<&PathBuf>, json: bool) -> Result
         println!("{}", outcome.to_json());
     } else {
         let c = &outcome.contact;
+        // 2D (plane strain) loads are per unit length.
+        let (fu, mu) = if scene.geometry.is_2d() { ("N/m", "N m/m") } else { ("N", "N m") };
         println!("{}", outcome.title);
         println!("  effects on: {}", outcome.effects.on.join(", "));
         println!(
-            "  contact: a = {:.6e} m, b = {:.6e} m, p0 = {:.6e} Pa, normal load = {:.6e}",
+            "  contact: a = {:.6e} m, b = {:.6e} m, p0 = {:.6e} Pa, normal load = {:.6e} {fu}",
             c.a, c.b, c.p0, c.normal_load
         );
         if let Some(h) = c.indentation {
             println!("  indentation: {h:.6e} m");
         }
         println!(
-            "  forces: tangential = {:.6e}, moment = {:.6e}, rolling moment = {:.6e}",
+            "  forces: tangential = {:.6e} {fu}, moment = {:.6e} {mu}, rolling moment = {:.6e} {mu}",
             outcome.forces.tangential, outcome.forces.moment, outcome.forces.rolling_moment
         );
         println!(
