@@ -860,7 +860,7 @@ impl<'p, 'a> Solver<'p, 'a> {
                 }
                 return Err(Error::OutOfDomain {
                     name: if is_force {
-                        "tangential load |T|/(f P) (with fixed or coupled directions)"
+                        "tangential load component / friction capacity f P"
                     } else {
                         "twisting moment / spin capacity"
                     },
