@@ -62,6 +62,19 @@ pub enum Error {
         /// Remaining sum of artificial variables (scaled).
         objective: f64,
     },
+    /// An iterative solver (the fast solver's Newton iteration) reached its iteration limit
+    /// before its residual met the tolerance.
+    #[error("{solver} did not converge: relative residual {residual:e} > tolerance {tolerance:e} after {iterations} iterations (raise max_iterations or the tolerance)")]
+    NotConverged {
+        /// Which solver.
+        solver: &'static str,
+        /// Iterations performed.
+        iterations: usize,
+        /// Residual reached (the larger of the complementarity and load residuals).
+        residual: f64,
+        /// Requested tolerance.
+        tolerance: f64,
+    },
     /// A dense linear system (the full-stick twist preprocessor) was singular.
     #[error("the full-stick system is not positive definite (pivot {index})")]
     NotPositiveDefinite {

@@ -385,9 +385,9 @@ impl<'a> FastProblem<'a> {
     /// * [`Error::OutOfDomain`] named `"tangential load |T|/(f P)"` (or the moment
     ///   equivalent) when the load exceeds the friction capacity (no equilibrium: the bodies
     ///   slide), named `"fast solver: no stick component left for the load constraints"`
-    ///   when the active set leaves no free component to carry the load, and named
-    ///   `"fast solver relative residual at max_iterations"` (value: the residual reached)
-    ///   when the Newton step limit is reached;
+    ///   when the active set leaves no free component to carry the load;
+    /// * [`Error::NotConverged`] (iterations, residual reached, tolerance) when the Newton
+    ///   step limit is reached;
     /// * [`Error::NotPositiveDefinite`] if a conjugate-gradient curvature is not positive
     ///   (index: the CG iteration).
     pub fn solve_with(
@@ -762,10 +762,11 @@ impl<'p, 'a> Solver<'p, 'a> {
                 break;
             }
             if iterations >= self.p.config.max_iterations {
-                return Err(Error::OutOfDomain {
-                    name: "fast solver relative residual at max_iterations",
-                    value: res.max(load_res),
-                    allowed: "<= the tolerance: raise FastConfig max_iterations or the tolerance",
+                return Err(Error::NotConverged {
+                    solver: "fast solver (semismooth Newton)",
+                    iterations,
+                    residual: res.max(load_res),
+                    tolerance: self.p.config.tolerance,
                 });
             }
             first = false;
