@@ -6,7 +6,7 @@
 //! the median wall time of repeated runs ([`std::time::Instant`]; no criterion here). Each
 //! method gets a one-line reading computed from its data and a log-log Pareto plot.
 //!
-//! [`run`] measures, [`write`] renders `accuracy.md` and `accuracy/<slug>.svg`, and
+//! [`run`] measures, [`write()`] renders `accuracy.md` and `accuracy/<slug>.svg`, and
 //! [`parse_errors`] reads the error column of a rendered report back (the CI test compares the
 //! quick run with the committed full report where they share settings).
 
