@@ -344,6 +344,17 @@ struct Piece {
     splittable: bool,
 }
 
+/// Kahan–Babuška (Neumaier) compensated sum: error about $\varepsilon|\sum| + O(n\varepsilon^2)\sum|x_i|$.
+pub(crate) fn neumaier_sum(xs: impl Iterator<Item = f64>) -> f64 {
+    let (mut s, mut c) = (0.0f64, 0.0f64);
+    for x in xs {
+        let t = s + x;
+        c += if s.abs() >= x.abs() { (s - t) + x } else { (x - t) + s };
+        s = t;
+    }
+    s + c
+}
+
 /// The global adaptive loop over already-mapped pieces.
 fn adaptive_core(
     f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
@@ -361,8 +372,10 @@ fn adaptive_core(
         pieces.push(Piece { a, b, map, value, error, splittable: !floor });
     }
     loop {
-        let total: f64 = pieces.iter().map(|p| p.value).sum();
-        let errsum: f64 = pieces.iter().map(|p| p.error).sum();
+        // Compensated sums: with up to `max_subdivisions` pieces a plain sum would add
+        // ~sqrt(n) eps |I| (measured 25 eps at 2000 pieces), more than the pieces' floors.
+        let total = neumaier_sum(pieces.iter().map(|p| p.value));
+        let errsum = neumaier_sum(pieces.iter().map(|p| p.error));
         let est = Estimate { value: total, error: errsum, evals };
         if tol.accepts(total, errsum) {
             return Ok(est);

@@ -188,6 +188,41 @@ fn deresiewicz_loop_area_and_traction_resultant() {
     assert!(rel_small.abs() < 1e-3);
 }
 
+/// Deresiewicz energy per cycle against mpmath (scripts/traction_deresiewicz.py, mp.dps = 60)
+/// at t = T*/fP from 1e-8 to 1, both sides of the former series switch at 0.05 included.
+/// fP = 1 exactly (f = 0.5, P = 2), so t = T* is the exact double of the table.
+#[test]
+fn deresiewicz_energy_matches_mpmath() {
+    let s = steel();
+    let (a, p, f) = (0.05, 2.0, 0.5);
+    let norm = 9.0 * (2.0 - s.poisson_ratio()) / (10.0 * s.shear_modulus() * a);
+    let text = include_str!("data/deresiewicz_energy.tsv");
+    let (mut max, mut sum2, mut rows, mut worst) = (0.0_f64, 0.0, 0usize, 0.0);
+    for line in text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()) {
+        let mut it = line.split('\t');
+        let t: f64 = it.next().unwrap().parse().unwrap();
+        let bracket: f64 = it.next().unwrap().parse().unwrap();
+        let w = Deresiewicz::new(a, p, f, t).unwrap().energy_per_cycle(&s);
+        assert!(w.is_finite() && w > 0.0, "t = {t}: W = {w}");
+        let err = (w / norm / bracket - 1.0).abs();
+        if err > max {
+            worst = t;
+        }
+        max = max.max(err);
+        sum2 += err * err;
+        rows += 1;
+    }
+    let rms = (sum2 / rows as f64).sqrt();
+    println!(
+        "Deresiewicz W: {rows} rows, max rel error {max:.2e} ({:.1} eps) at t = {worst:e}, RMS {rms:.2e}",
+        max / f64::EPSILON
+    );
+    assert_eq!(rows, 37);
+    assert!(max < tol::DERESIEWICZ_ENERGY, "{max}");
+    // T* = 0: no slip, no dissipation.
+    assert_eq!(Deresiewicz::new(a, p, f, 0.0).unwrap().energy_per_cycle(&s), 0.0);
+}
+
 /// Lubkin: M(c) limits, the mpmath-free identities of FORMULAS.md G, and the traction's
 /// moment equal to M(c).
 #[test]

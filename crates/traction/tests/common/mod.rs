@@ -41,6 +41,11 @@ pub mod tol {
     /// relative (1e-10 at the 1e-6 switch), and K - E ~ ln(4/k') damps that by the log;
     /// the expansion below the switch is accurate to O(k'^4 ln k') ~ 1e-11.
     pub const K_MINUS_E: f64 = 1e-10;
+    /// Deresiewicz energy per cycle against mpmath (60 digits), normalised by its prefactor:
+    /// the cancellation-free bracket costs ~5 roundings plus the cube root, and undoing the
+    /// prefactor 9(2-nu)(fP)^2/(10 G a) about 5 more; 16 eps leaves room for their sum
+    /// (the brief's target is ~1e-14).
+    pub const DERESIEWICZ_ENERGY: f64 = 16.0 * f64::EPSILON;
 }
 
 /// Seed 002 steel (FORMULAS.md E): E = 30e6 psi, nu = 0.3.
