@@ -1,14 +1,15 @@
 //! Numbers of the chapter "Errata of the seeds": each published value beside ours, with the
-//! check that decided it.
+//! check that decided it, and the full divergence list of the verification crate.
 //!
-//! The published values are data, typed once here with their source (seed, table or
-//! equation); they are the only typed numbers of the book. (The verification crate, issue 7,
-//! will hold the full table of published values; this page can read it from there once it
-//! lands.)
+//! The published values are not typed here: they live, each with its source (seed, place,
+//! the printed words), in `stickslip_verification::published`, and the seeds' formulas as
+//! printed in `stickslip_verification::as_published`. This page reads both, computes our
+//! side with the physics crates, and lists every row that the verification checks record
+//! as a divergence ([`stickslip_verification::all_divergences`]).
 
-use crate::fmt::{err, num, pct, Table};
-use crate::graded::TABLE1;
-use crate::mindlin::{example1, EXAMPLE1};
+use crate::fmt::{num, num_or_zero, pct, resid, Table};
+use crate::graded::table1;
+use crate::mindlin::{example1, example1_inputs};
 use crate::{Context, Error};
 use std::f64::consts::{FRAC_PI_2, PI};
 use stickslip_graded::{
@@ -23,27 +24,14 @@ use stickslip_rolling::contact_length;
 use stickslip_special::{bessel_i0e, bessel_i1e, bessel_k0e, bessel_k1e, gamma};
 use stickslip_traction::closed::{Deresiewicz, Mindlin};
 use stickslip_traction::{ContactGrid, InfluenceModel, Load, TractionProblem};
+use stickslip_verification::published::{seed000 as pub000, seed002 as pub002};
+use stickslip_verification::{as_published, Published};
 
 const PAGE: &str = "errata.md";
 
-/// Published values: (seed, where, value).
-pub mod published {
-    /// Seed 000 Table 1, $I_k$.
-    pub const T1_IK: f64 = 0.3489;
-    /// Seed 000 Table 1, $J_k$.
-    pub const T1_JK: f64 = 0.3255;
-    /// Seed 000 Table 1, $h$ \[m\].
-    pub const T1_H: f64 = 0.0053;
-    /// Seed 002 Example 1, Mindlin's rigid-body movement \[in\].
-    pub const EX1_MINDLIN: f64 = 0.67139e-4;
-    /// Seed 002 Example 1, the LP's rigid-body movement \[in\].
-    pub const EX1_LP: f64 = 0.66196e-4;
-    /// Seed 002 Example 1, stated LP deviation from Mindlin.
-    pub const EX1_DEVIATION: f64 = -0.0141;
-    /// Seed 002 Example 2, movement of the "rubber" \[in\].
-    pub const EX2_RUBBER: f64 = 0.39469e-3;
-    /// Seed 002 Example 2, movement of the steel \[in\].
-    pub const EX2_STEEL: f64 = 0.13156e-4;
+/// A published value as printed, with its place: `<as printed> (<table or example>)`.
+fn printed(p: &Published) -> String {
+    format!("{} ({})", p.text, p.source.place)
 }
 
 /// The page.
@@ -55,6 +43,7 @@ pub fn page() -> Result<String, Error> {
     seed000(&mut out)?;
     seed001(&mut out)?;
     seed002(&mut out)?;
+    divergences(&mut out)?;
     Ok(out)
 }
 
@@ -63,7 +52,7 @@ fn cfg(rel: f64) -> Result<AdaptiveConfig, Error> {
 }
 
 fn seed000(out: &mut String) -> Result<(), Error> {
-    let (nu, k, r, a, e0) = TABLE1;
+    let (nu, k, r, a, e0) = table1();
     let m = GradedMaterial::new(e0, k, nu).ctx(PAGE, "material")?;
     let b = m.beta();
     let c = cfg(1e-14)?;
@@ -71,7 +60,6 @@ fn seed000(out: &mut String) -> Result<(), Error> {
         .ctx(PAGE, "I_k")?;
     let jq = gauss_kronrod(|t| t.cos().powf(k) * t.sin() * (b * t).sin(), 0.0, FRAC_PI_2, &c)
         .ctx(PAGE, "J_k")?;
-    let gamma_one = PI / (2f64.powf(k + 2.0) * (k + 2.0));
     let cyl = RigidCylinder::from_half_width(&m, r, a).ctx(PAGE, "cylinder")?;
     let h = cyl.indentation().ctx(PAGE, "h")?;
     let disp =
@@ -125,39 +113,43 @@ fn seed000(out: &mut String) -> Result<(), Error> {
     let mut t = Table::new(&["item (seed 000)", "published", "ours", "the check that decided it"]);
     t.row(vec![
         "Table 1, I_k (eq 12)".into(),
-        num(published::T1_IK),
+        printed(&pub000::I_K),
         num(m.i_k()),
         format!(
             "quadrature of ∫cos^(k+1)θ cos βθ dθ = {} (rel. diff {}); the published value is eq 12 with every Γ(·) set to 1: π/(2^(k+2)(k+2)) = {}",
             num(iq.value),
-            err(m.i_k() / iq.value - 1.0),
-            num(gamma_one)
+            resid(m.i_k() / iq.value - 1.0, 1.0),
+            num(as_published::i_k_gamma_one(k))
         ),
     ]);
     t.row(vec![
         "Table 1, J_k (eq 14)".into(),
-        num(published::T1_JK),
+        printed(&pub000::J_K),
         num(m.j_k()),
         format!(
-            "quadrature = {} (rel. diff {}); published = (β/(1+k)) × published I_k = {}",
+            "quadrature = {} (rel. diff {}); the published value is eq 14, J_k = βI_k/(1+k), on the Γ ≡ 1 value of I_k: {}",
             num(jq.value),
-            err(m.j_k() / jq.value - 1.0),
-            num(b / (1.0 + k) * published::T1_IK)
+            resid(m.j_k() / jq.value - 1.0, 1.0),
+            num(as_published::j_k_gamma_one(k, b))
         ),
     ]);
     t.row(vec![
         "Table 1, h (eq 16, correct)".into(),
-        num(published::T1_H),
+        printed(&pub000::H),
         num(h),
         format!(
             "full integration u_y(0) = {} (rel. diff {}); the table rounds it",
             num(uy0),
-            err(uy0 / h - 1.0)
+            resid(uy0 / h - 1.0, 1.0)
         ),
     ]);
     t.row(vec![
         "Eq 15: factor Γ((3+k−β)/2) missing".into(),
-        format!("P = {} kgf/m for a = 0.0178 m", num(cyl.load() * missing)),
+        format!(
+            "P = {} kgf/m for a = {} m",
+            num(as_published::load_eq15_printed(nu, k, b, e0, r, a, false)),
+            pub000::A.text
+        ),
         format!("P = {} kgf/m", num(cyl.load())),
         format!(
             "the missing factor is {}; with it the pressure meets u_y = h − x²/2R to the digits on the graded page, and k → 0 gives 2D Hertz",
@@ -196,7 +188,7 @@ fn seed000(out: &mut String) -> Result<(), Error> {
         format!(
             "full integration of the q-part = {} (rel. diff {}); the omitted part is {} of eq 32",
             num(parts.ux_from_q),
-            err(parts.ux_from_q / e32 - 1.0),
+            resid(parts.ux_from_q / e32 - 1.0, 1.0),
             pct(parts.ux_from_p / e32)
         ),
     ]);
@@ -207,7 +199,7 @@ fn seed000(out: &mut String) -> Result<(), Error> {
         format!(
             "f = 0.3: (−2f + 2if²)/(1 − if) = {} + {}i, i.e. −2f: the result −(2f/π)∫… has the opposite sign of eq 11",
             num(ratio_re_exact),
-            crate::fmt::num_or_zero(ratio_im, 1.0)
+            num_or_zero(ratio_im, 1.0)
         ),
     ]);
     out.push_str("#### Seed 000 (graded roller, after Giannakopoulos & Pallot 2000)\n\n");
@@ -250,8 +242,8 @@ fn seed001(out: &mut String) -> Result<(), Error> {
         "—".into(),
         "Carter".into(),
         format!(
-            "the Wronskian x[I0K1 + I1K0] = 1 holds to {} on [1e-6, 1e6]; see the elastic-limit table of the rolling chapter",
-            err(worst)
+            "the Wronskian x[I0K1 + I1K0] − 1 is {} on [1e-6, 1e6]; see the elastic-limit table of the rolling chapter",
+            resid(worst, 1.0)
         ),
     ]);
     t.row(vec![
@@ -259,8 +251,8 @@ fn seed001(out: &mut String) -> Result<(), Error> {
         "a, 1/a, ∞, 1".into(),
         "b, 1/2, x, b".into(),
         format!(
-            "with the corrected forms the computed stresses integrate to P, Q (eq 27) and M1 (eq 28) to {} (rolling chapter)",
-            err(worst_res)
+            "with the corrected forms the computed stresses integrate to P, Q (eq 27) and M1 (eq 28), rel. diff {} (rolling chapter)",
+            resid(worst_res, 1.0)
         ),
     ]);
     t.row(vec![
@@ -276,7 +268,8 @@ fn seed001(out: &mut String) -> Result<(), Error> {
 
 fn seed002(out: &mut String) -> Result<(), Error> {
     let (s, a, _, m) = example1()?;
-    let (_, nu, r, p, t_load, f) = EXAMPLE1;
+    let (_, r, p, t_load, f) = example1_inputs()?;
+    let nu = s.poisson_ratio();
     let per_body = m.compliance_per_body(&s);
     let grid = ContactGrid::hertz_circle(a, p, 10).ctx(PAGE, "grid")?;
     let lp = TractionProblem::new(&grid, [s, s], f, Load::Force { magnitude: t_load, angle: 0.0 })
@@ -285,20 +278,28 @@ fn seed002(out: &mut String) -> Result<(), Error> {
         .solve()
         .ctx(PAGE, "LP")?;
     let lp_body = lp.rigid_per_body[0];
+    let (pub_mindlin, pub_lp) = (pub002::EX1_DELTA_MINDLIN, pub002::EX1_DELTA_LP);
 
-    // Example 2: steel sphere on "rubber" E = 1e6 psi, nu = 0.3.
-    let rub = Material::new(1.0e6, 0.3).ctx(PAGE, "rubber")?;
-    let h2 = HertzSphere::new(270.0, r, composite_modulus(&s, &rub)).ctx(PAGE, "Hertz")?;
-    let m2 = Mindlin::new(h2.contact_radius(), 270.0, 0.2, 36.0).ctx(PAGE, "Mindlin")?;
+    // Example 2: the same steel sphere on the "rubber" of FORMULAS.md E.
+    let rub = stickslip_verification::seed002::rubber().ctx(PAGE, "rubber")?;
+    let (p2, t2, f2) = (pub002::EX2_P.value, pub002::EX2_T.value, pub002::EX2_F.value);
+    let h2 = HertzSphere::new(p2, r, composite_modulus(&s, &rub)).ctx(PAGE, "Hertz")?;
+    let m2 = Mindlin::new(h2.contact_radius(), p2, f2, t2).ctx(PAGE, "Mindlin")?;
     let (d_r, d_s) = (m2.compliance_per_body(&rub), m2.compliance_per_body(&s));
+    let (pub_r, pub_s) = (pub002::EX2_DELTA_RUBBER, pub002::EX2_DELTA_STEEL);
 
-    // Energy per cycle: the sign in the bracket.
+    // Energy per cycle at a = P = f = G = 1: the sign in the bracket.
     let tt = 0.1_f64;
     let body = Material::new(2.6, 0.3).ctx(PAGE, "body")?;
     let w = Deresiewicz::new(1.0, 1.0, 1.0, tt).ctx(PAGE, "Deresiewicz")?.energy_per_cycle(&body);
-    let pref = 9.0 * (2.0 - 0.3) / (10.0 * body.shear_modulus());
-    let minus = pref
-        * (1.0 - (1.0 - tt).powf(5.0 / 3.0) - 5.0 * tt / 6.0 * (1.0 - (1.0 - tt).powf(2.0 / 3.0)));
+    let minus = as_published::energy_eq35_printed(
+        body.poisson_ratio(),
+        body.shear_modulus(),
+        1.0,
+        1.0,
+        1.0,
+        tt,
+    );
     let at_gross = Mindlin::new(a, p, f, f * p).ctx(PAGE, "Mindlin at fP")?.compliance_per_body(&s);
     let g = s.shear_modulus();
     let h = 1.0;
@@ -312,13 +313,17 @@ fn seed002(out: &mut String) -> Result<(), Error> {
     ]);
     t.row(vec![
         "Example 1: Mindlin δ".into(),
-        num(published::EX1_MINDLIN),
+        printed(&pub_mindlin),
         format!("{} per body ({} for both)", num(per_body), num(m.compliance_relative(&s, &s))),
-        "Cerruti quadrature of the Mindlin traction (Mindlin chapter): the published value is per body, with E = 30e6 psi, ν = 0.3".into(),
+        format!(
+            "Cerruti quadrature of the Mindlin traction (Mindlin chapter): the published value is per body, with E = {} psi, ν = {} (FORMULAS.md E)",
+            crate::fmt::sig(s.youngs_modulus(), 4),
+            num(nu)
+        ),
     ]);
     t.row(vec![
-        "Example 1: LP δ (80 elements)".into(),
-        format!("{} ({})", num(published::EX1_LP), pct(published::EX1_DEVIATION)),
+        format!("Example 1: LP δ ({} elements)", pub002::EX1_N.text),
+        format!("{}, \"{} %\" below Mindlin", printed(&pub_lp), pub002::EX1_DEVIATION.text),
         format!(
             "{} ({}, the seed's point-load coefficients)",
             num(lp_body),
@@ -326,17 +331,19 @@ fn seed002(out: &mut String) -> Result<(), Error> {
         ),
         format!(
             "published LP / published Mindlin − 1 = {}",
-            pct(published::EX1_LP / published::EX1_MINDLIN - 1.0)
+            pct(pub_lp.value / pub_mindlin.value - 1.0)
         ),
     ]);
     t.row(vec![
         "Example 2: the quoted movements".into(),
-        format!("rubber {}, steel {}", num(published::EX2_RUBBER), num(published::EX2_STEEL)),
+        format!("rubber {}, steel {}", printed(&pub_r), printed(&pub_s)),
         format!("Mindlin per body: rubber {}, steel {}", num(d_r), num(d_s)),
         format!(
-            "with E_rubber = 1.0e6 psi, ν = 0.3 the quoted values are {} and {} from Mindlin, i.e. LP results (ratio rubber/steel {})",
-            pct(published::EX2_RUBBER / d_r - 1.0),
-            pct(published::EX2_STEEL / d_s - 1.0),
+            "with E_rubber = {} psi, ν = {} the quoted values are {} and {} from Mindlin, i.e. LP results (ratio rubber/steel {})",
+            crate::fmt::sig(rub.youngs_modulus(), 4),
+            num(rub.poisson_ratio()),
+            pct(pub_r.value / d_r - 1.0),
+            pct(pub_s.value / d_s - 1.0),
             num(d_r / d_s)
         ),
     ]);
@@ -368,6 +375,51 @@ fn seed002(out: &mut String) -> Result<(), Error> {
         ),
     ]);
     out.push_str("#### Seed 002 (handbook chapter 3, traction and microslip)\n\n");
+    out.push_str(&t.render());
+    Ok(())
+}
+
+/// A table cell from free text: `|` escaped, line breaks as spaces.
+fn cell(s: &str) -> String {
+    s.replace('|', "\\|").replace('\n', " ")
+}
+
+/// Every divergence recorded by the verification crate's checks, with its cause.
+fn divergences(out: &mut String) -> Result<(), Error> {
+    let list = stickslip_verification::all_divergences().ctx(PAGE, "verification checks")?;
+    let mut t = Table::new(&[
+        "id",
+        "quantity",
+        "reference",
+        "reference value",
+        "computed",
+        "computed / reference − 1",
+        "cause",
+    ]);
+    for d in &list {
+        let rel = d.computed / d.published - 1.0;
+        let rel = if rel.is_finite() { pct(rel) } else { "n/a".to_owned() };
+        let cause = d.cause.as_ref().map_or_else(|| "UNATTRIBUTED".to_owned(), |c| c.line());
+        t.row(vec![
+            d.id.to_owned(),
+            cell(&d.quantity),
+            cell(&d.reference),
+            num(d.published),
+            num(d.computed),
+            rel,
+            cell(&cause),
+        ]);
+    }
+    out.push_str("#### Every divergence recorded by the verification crate\n\n");
+    out.push_str(&format!(
+        "The {} rows of the checks of `stickslip-verification` (one per VERIFICATION.md id) \
+         that differ from their reference by more than its precision, each with its cause \
+         (`stickslip_verification::all_divergences`). Two kinds: a published number (the \
+         reference, with its seed and place) against our computed value; or a formula as \
+         published, evaluated (computed), against the corrected quantity (the reference). The \
+         same list, with the figures, is `docs/verification/divergences.md`.\n\n",
+        list.len()
+    ));
     out.push_str(&t.render());
     Ok(())
 }

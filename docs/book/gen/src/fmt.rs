@@ -43,6 +43,50 @@ pub fn err(x: f64) -> String {
     sig(x, 2)
 }
 
+/// Relative level below which a residual is rounding noise: $10^{-13} \approx 450\,\epsilon$.
+///
+/// A residual computed in `f64` by a closed form (a few ulp), by adaptive quadrature (the
+/// rounding of a few hundred weighted terms) or by a solver's long sums carries noise of a
+/// few to a few hundred ulp, and that noise changes with any reordering of the arithmetic in
+/// a physics crate. The measured residuals of the checks in this book are below $10^{-13}$
+/// except where they are cancellation-limited, and those call [`resid`] with a scale.
+pub const ROUNDING: f64 = 1e-13;
+
+/// A residual: a quantity that vanishes in exact arithmetic (a closed form minus an
+/// independent evaluation, an identity, an equilibrium or complementarity defect),
+/// measured against `scale` (1 for a relative difference; the size of the quantity for an
+/// absolute one; the condition number $\kappa$ where cancellation amplifies the rounding).
+///
+/// At rounding level, $|x| <$ [`ROUNDING`] $\times|\text{scale}|$, the page shows the bound
+/// `< 1e-13` (for a scale other than 1: the smallest power of ten above
+/// $10^{-13}|\text{scale}|$), so that a harmless change of the last bits does not change the
+/// page; above it, two significant digits as [`err`]. The sign is dropped for the bound.
+#[must_use]
+pub fn resid(x: f64, scale: f64) -> String {
+    if x.is_nan() {
+        return "NaN".to_owned();
+    }
+    let level = ROUNDING * scale.abs();
+    if x.abs() < level {
+        format!("< {}", sig(pow10_at_least(level), 1))
+    } else {
+        err(x)
+    }
+}
+
+/// The smallest power of ten $\ge v$ ($v > 0$ finite), exact in its decimal form.
+fn pow10_at_least(v: f64) -> f64 {
+    let p = |e: i32| format!("1e{e}").parse::<f64>().unwrap_or(f64::INFINITY);
+    let mut e = v.log10().ceil() as i32;
+    while p(e) < v {
+        e += 1;
+    }
+    while p(e - 1) >= v {
+        e -= 1;
+    }
+    p(e)
+}
+
 /// A value that is zero in exact arithmetic may come out as rounding noise: print `≈ 0`
 /// when $|x| \le 10^{-12}\,$`scale`, so that the page does not depend on the last bits.
 #[must_use]
@@ -126,5 +170,22 @@ mod tests {
         assert_eq!(sig(986.39e6, 5), "9.8639e8");
         assert_eq!(pct(-0.014), "-1.4 %");
         assert_eq!(pct(0.0055), "+0.55 %");
+    }
+
+    #[test]
+    fn residuals() {
+        assert_eq!(resid(2.2e-16, 1.0), "< 1e-13");
+        assert_eq!(resid(-9.9e-14, 1.0), "< 1e-13");
+        assert_eq!(resid(0.0, 1.0), "< 1e-13");
+        assert_eq!(resid(1.0e-13, 1.0), "1e-13");
+        assert_eq!(resid(-2.4e-12, 1.0), "-2.4e-12");
+        // Scaled: bound is the power of ten above 1e-13 * scale.
+        assert_eq!(resid(3.4e-10, 144721.0), "< 1e-7");
+        assert_eq!(resid(3.4e-10, 10000.0), "< 1e-9");
+        assert_eq!(resid(2.0e-19, 0.0045), "< 1e-15");
+        assert_eq!(resid(f64::NAN, 1.0), "NaN");
+        assert_eq!(pow10_at_least(1e-13), 1e-13);
+        assert_eq!(pow10_at_least(1.0000000000000002e-13), 1e-12);
+        assert_eq!(pow10_at_least(0.999e-3), 1e-3);
     }
 }

@@ -1,6 +1,6 @@
 //! Numbers of the chapter "Influence coefficients of uniform rectangles" (FORMULAS.md F).
 
-use crate::fmt::{err, num, pct, Table};
+use crate::fmt::{num, pct, resid, Table};
 use crate::{check, tol, Context, Error};
 use std::f64::consts::PI;
 use stickslip_halfspace::rectangle::{shear_self_term, shear_x_displacement, shear_x_ux, Rect};
@@ -32,7 +32,7 @@ pub fn page() -> Result<String, Error> {
     let mut t = Table::new(&["quantity (G = 1, ν = 0.3, square of side 1)", "value"]);
     t.row(vec!["`rectangle::shear_self_term`".into(), num(exact)]);
     t.row(vec!["(2 − ν) ln(1 + √2)/(πGh)".into(), num(closed)]);
-    t.row(vec!["rel. diff".into(), err(d)]);
+    t.row(vec!["rel. diff".into(), resid(d, 1.0)]);
     t.row(vec!["equal-area circle (2 − ν)/(2√π G h)".into(), num(circle)]);
     t.row(vec!["circle / exact − 1".into(), pct(circle / exact - 1.0)]);
     out.push_str(&t.render());
@@ -86,10 +86,10 @@ pub fn page() -> Result<String, Error> {
             format!("({}, {})", num(x), num(y)),
             num(ex.x),
             num(qx),
-            err(dx),
+            resid(dx, 1.0),
             num(ex.y),
             num(qy),
-            err(dy),
+            resid(dy, 1.0),
         ]);
     }
     check(PAGE, "rectangle vs quadrature", worst, tol::CLOSED_VS_QUAD)?;

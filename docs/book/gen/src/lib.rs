@@ -3,8 +3,14 @@
 //!
 //! Every number on a generated page comes from a call into the physics crates or from an
 //! independent check computed here (quadrature with `stickslip-quad`, a closed form, an
-//! identity). Nothing is typed except the *published* values of the seed papers in the
-//! errata page ([`errata`]), each with its source.
+//! identity). The *published* values of the seed papers, and the seeds' inputs (Table 1 of
+//! seed 000, the examples of seed 002), are not typed here: they are read from their one home,
+//! `stickslip_verification::published`, and the seeds' formulas as printed from
+//! `stickslip_verification::as_published`.
+//!
+//! Residuals that vanish in exact arithmetic are printed through [`fmt::resid`]: at rounding
+//! level as a bound (`< 1e-13`), so that a harmless change of the last bits in a physics crate
+//! does not make the pages stale.
 //!
 //! Each check has a limit ([`tol`]); if a check exceeds its limit, generation fails with
 //! [`Error::CheckFailed`] instead of publishing a wrong page.
@@ -18,6 +24,7 @@
 //! ```
 
 pub mod errata;
+pub mod fast;
 pub mod fmt;
 pub mod graded;
 pub mod influence;
@@ -116,13 +123,14 @@ fn header(name: &str) -> String {
 /// [`Error::Compute`] if a library call fails, [`Error::CheckFailed`] if a check exceeds
 /// its limit.
 pub fn generate() -> Result<Vec<Page>, Error> {
-    let builders: [(&'static str, PageFn); 8] = [
+    let builders: [(&'static str, PageFn); 9] = [
         ("graded.md", graded::page),
         ("mcewen.md", mcewen::page),
         ("rolling.md", rolling::page),
         ("mindlin.md", mindlin::page),
         ("influence.md", influence::page),
         ("lp.md", lp::page),
+        ("fast.md", fast::page),
         ("errata.md", errata::page),
         ("index.md", index_page),
     ];

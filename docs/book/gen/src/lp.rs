@@ -1,12 +1,13 @@
 //! Numbers of the chapter "The modified LP and its entry rule" (seed 002 §3.3; FORMULAS.md E,
 //! F).
 
-use crate::fmt::{err, num, pct, Table};
+use crate::fmt::{num, pct, resid, Table};
 use crate::mindlin::example1;
 use crate::{check, tol, Context, Error};
 use stickslip_traction::{
     ContactGrid, ElementState, InfluenceModel, Load, Regime, TractionProblem,
 };
+use stickslip_verification::published::seed002 as pub002;
 
 const PAGE: &str = "lp.md";
 
@@ -16,7 +17,7 @@ const PAGE: &str = "lp.md";
 /// A failed library call or check.
 pub fn page() -> Result<String, Error> {
     let (s, a, _, m) = example1()?;
-    let (_, _, _, p, t_load, f) = crate::mindlin::EXAMPLE1;
+    let (_, _, p, t_load, f) = crate::mindlin::example1_inputs()?;
     let want = m.compliance_per_body(&s);
     let grid = ContactGrid::hertz_circle(a, p, 10).ctx(PAGE, "grid")?;
     let normal = grid.normal_force();
@@ -81,22 +82,24 @@ pub fn page() -> Result<String, Error> {
             sol.info.iterations.to_string(),
             sol.info.degenerate_pivots.to_string(),
             sol.info.rejected_entries.to_string(),
-            err(total / t_load - 1.0),
-            err(over.max(0.0)),
-            err(compl),
+            resid(total / t_load - 1.0, 1.0),
+            resid(over.max(0.0), 1.0),
+            resid(compl, 1.0),
         ]);
     }
     check(PAGE, "Example 1 vs Mindlin", exact_rel, tol::LP_EXAMPLE1)?;
     let mut out = String::new();
     out.push_str("#### Seed 002 Example 1 on its 80-element grid\n\n");
     out.push_str(&format!(
-        "Hertz circle a = {} in, 10 elements across (h = {} in), steel on steel, T = 144 lbf, \
-         f = 0.1, solved by `TractionProblem` (the modified LP). The seed reports δ_LP = \
-         0.66196e-4 in, 1.41 % below Mindlin. Slip and reserve are relative to the rigid \
-         movement and to the element capacity; their elementwise minimum is the \
-         complementarity residual.\n\n",
+        "Hertz circle a = {} in, 10 elements across (h = {} in), {}, solved by \
+         `TractionProblem` (the modified LP). The seed reports δ_LP = {} in, {} % below \
+         Mindlin. Slip and reserve are relative to the rigid movement and to the element \
+         capacity; their elementwise minimum is the complementarity residual.\n\n",
         num(a),
-        num(2.0 * a / 10.0)
+        num(2.0 * a / 10.0),
+        crate::mindlin::example1_text()?,
+        pub002::EX1_DELTA_LP.text,
+        pub002::EX1_DEVIATION.text
     ));
     out.push_str(&t.render());
     Ok(out)

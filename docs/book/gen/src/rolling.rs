@@ -1,6 +1,6 @@
 //! Numbers of the chapter "Goryacheva's viscoelastic rolling" (FORMULAS.md D).
 
-use crate::fmt::{err, num, Table};
+use crate::fmt::{err, num, resid, Table};
 use crate::{check, tol, Context, Error};
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 use stickslip_rolling::{
@@ -35,26 +35,21 @@ pub fn page() -> Result<String, Error> {
 /// cancel exactly.
 fn wronskian(out: &mut String) -> Result<(), Error> {
     let n = 1201;
-    let (mut worst, mut wx, mut sum2) = (0.0f64, 0.0, 0.0);
+    let (mut worst, mut sum2) = (0.0f64, 0.0);
     for i in 0..n {
         let x = 10f64.powf(-6.0 + 12.0 * i as f64 / (n - 1) as f64);
         let w = x * (bessel_i0e(x) * bessel_k1e(x) + bessel_i1e(x) * bessel_k0e(x)) - 1.0;
         sum2 += w * w;
-        if w.abs() > worst {
-            worst = w.abs();
-            wx = x;
-        }
+        worst = worst.max(w.abs());
     }
     check(PAGE, "Wronskian", worst, tol::IDENTITY)?;
     out.push_str("#### The Wronskian that gives the elastic limit\n\n");
     out.push_str(&format!(
         "$x[I_0(x)K_1(x) + I_1(x)K_0(x)] - 1$ on {n} log-spaced points of $[10^{{-6}}, 10^{{6}}]$, \
          from the exponentially scaled functions of `stickslip-special` ($e^{{x}}$ and \
-         $e^{{-x}}$ cancel exactly): max {} (at x = {}), RMS {}, i.e. {} ulp.\n\n",
-        err(worst),
-        num(wx),
-        err((sum2 / n as f64).sqrt()),
-        num((worst / f64::EPSILON).round())
+         $e^{{-x}}$ cancel exactly): max {}, RMS {}.\n\n",
+        resid(worst, 1.0),
+        resid((sum2 / n as f64).sqrt(), 1.0)
     ));
     let x = 1.0e4;
     out.push_str(&format!(
@@ -204,9 +199,9 @@ fn viscoelastic(out: &mut String) -> Result<(), Error> {
     check(PAGE, "rolling resultants", worst, tol::ROLLING_RESULTANTS)?;
     let mut t =
         Table::new(&["resultant", "integral of the computed stress", "equation", "rel. diff"]);
-    t.row(vec!["∫σ_y dx = P".into(), num(ip), num(p), err(d[0])]);
-    t.row(vec!["∫τ dx = Q (eq 27)".into(), num(iq), num(s.tangential_force), err(d[1])]);
-    t.row(vec!["∫xσ_y dx = M1 (eq 28)".into(), num(im), num(s.moment_m1), err(d[2])]);
+    t.row(vec!["∫σ_y dx = P".into(), num(ip), num(p), resid(d[0], 1.0)]);
+    t.row(vec!["∫τ dx = Q (eq 27)".into(), num(iq), num(s.tangential_force), resid(d[1], 1.0)]);
+    t.row(vec!["∫xσ_y dx = M1 (eq 28)".into(), num(im), num(s.moment_m1), resid(d[2], 1.0)]);
     out.push_str("#### A viscoelastic case: stresses against the resultants\n\n");
     out.push_str(&format!(
         "Same rollers, α = {} s, β = {} s, w = {} m/s: l = {} m (l/l_H = {}), d = {} m, \
@@ -226,8 +221,8 @@ fn viscoelastic(out: &mut String) -> Result<(), Error> {
         num(s.info.bessel_args[1]),
         num(s.info.bessel_args[2]),
         num(s.info.bessel_args[3]),
-        err(s.info.length_residual),
-        err(s.info.stick_residual),
+        resid(s.info.length_residual, 1.0),
+        resid(s.info.stick_residual, s.contact_length),
         s.info.length_iterations,
         s.info.stick_iterations,
         inner
@@ -246,7 +241,7 @@ fn viscoelastic(out: &mut String) -> Result<(), Error> {
         "Hard case (FORMULAS.md D: α = 1e-5 s, β = 1e-6 s, w = 0.1 m/s, where the unscaled \
          eq 19 overflows): x1 = {}, x2 = {}; l/l_H = {} (slow asymptote \
          √(8KRP + (α−β)²w²) − (α−β)w gives {}), d = {} m, m = {} m, Q = {} N/m, \
-         M* = {} N, σ_y(0) = {} Pa ± {}.\n\n",
+         M* = {} N, σ_y(0) = {} Pa (quadrature error estimate {} Pa).\n\n",
         num(s.info.bessel_args[0]),
         num(s.info.bessel_args[1]),
         num(s.contact_length / s.hertz_length),
@@ -256,7 +251,7 @@ fn viscoelastic(out: &mut String) -> Result<(), Error> {
         num(s.tangential_force),
         num(s.rolling_moment),
         num(pmid.value),
-        err(pmid.error)
+        resid(pmid.error, pmid.value)
     ));
     Ok(())
 }
