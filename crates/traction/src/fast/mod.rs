@@ -26,7 +26,8 @@
 //!
 //! A semismooth Newton (primal–dual active set) iteration on the natural residual
 //! $$\mathbf r_k = \mathbf q_k - \Pi_{D_k}\!\big(\mathbf q_k + \rho\,\mathbf s_k\big),\qquad
-//!   \rho = 1/K_{xx}(0),$$
+//!   \rho = \frac{2}{K_{xx}(0) + K_{yy}(0)},$$
+//! the inverse of the mean self-influence (equal to $1/K_{xx}(0)$ on square cells),
 //! (Hüeber, Stadler & Wohlmuth 2008, *SIAM J. Sci. Comput.* 30, for 3D Coulomb contact;
 //! Vollebregt's TangCG in CONTACT uses the same stick/slip split with conjugate gradients):
 //! elements with $|\mathbf q_k + \rho\mathbf s_k| \le c_k$ stick (two free components, slip
