@@ -136,8 +136,8 @@ impl Deresiewicz {
     /// Energy dissipated per cycle, per body (seed 002 eq. 3.5 with FORMULAS.md E's '+'):
     /// $$W = \frac{9(2-\nu)f^2P^2}{10\,G a}\,B(t),\qquad
     ///   B(t) = 1-(1-t)^{5/3} - \frac{5t}{6}\big(1+(1-t)^{2/3}\big),\quad t = T^*/fP .$$
-    /// The bracket is evaluated in the cancellation-free form of [`energy_bracket`]
-    /// (relative accuracy of a few ulp for every $t \in [0, 1]$, no switch point); for small
+    /// The bracket is evaluated in a cancellation-free form: with $s=(1-t)^{1/3}$,
+    /// $B = t^3(s^2+3s+1)/\big(6(1+s+s^2)^3\big)$, all terms positive (relative accuracy of a few ulp for every $t \in [0, 1]$, no switch point); for small
     /// $t$ it gives $W \approx (2-\nu)T^{*3}/(36 G a fP)$.
     #[must_use]
     pub fn energy_per_cycle(&self, body: &Material) -> f64 {
