@@ -19,12 +19,15 @@
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
-use stickslip_scene::{run, write_outputs, Plan, Progress, RunOptions, Scene, SceneError};
+use stickslip_scene::{
+    run, write_outputs, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, Zones,
+};
 
 /// Frictional contact mechanics: run scenes, explain their plan, reproduce the published
 /// figures, report accuracy against time.
@@ -81,9 +84,13 @@ fn load(scene: Option<&PathBuf>) -> Result<Scene, SceneError> {
 }
 
 /// A progress bar that appears only on a terminal and only once a run has lasted a second.
+/// Stages that report no intermediate progress (one long solve, e.g. the fast solver) still
+/// show: a watcher thread draws the last reported stage once the second has passed, and the
+/// bar's spinner keeps ticking.
 struct Bar {
     start: Instant,
     bar: Mutex<Option<ProgressBar>>,
+    last: Mutex<Option<Progress>>,
     enabled: bool,
 }
 
@@ -92,14 +99,22 @@ impl Bar {
         Bar {
             start: Instant::now(),
             bar: Mutex::new(None),
+            last: Mutex::new(None),
             enabled: std::io::stderr().is_terminal(),
         }
     }
 
     fn update(&self, p: Progress) {
+        if let Ok(mut l) = self.last.lock() {
+            *l = Some(p);
+        }
         if !self.enabled || self.start.elapsed() < Duration::from_secs(1) {
             return;
         }
+        self.draw(p);
+    }
+
+    fn draw(&self, p: Progress) {
         let Ok(mut guard) = self.bar.lock() else { return };
         let bar = guard.get_or_insert_with(|| {
             let b = ProgressBar::new(p.total as u64);
@@ -108,11 +123,30 @@ impl Bar {
             {
                 b.set_style(style.progress_chars("=> "));
             }
+            b.enable_steady_tick(Duration::from_millis(120));
             b
         });
         bar.set_length(p.total as u64);
         bar.set_position(p.done as u64);
         bar.set_message(p.stage);
+    }
+
+    /// Until `done` is set: once a second has passed, draw the last stage reported.
+    fn watch(&self, done: &AtomicBool) {
+        if !self.enabled {
+            return;
+        }
+        while !done.load(Ordering::Relaxed) {
+            std::thread::sleep(Duration::from_millis(50));
+            if self.start.elapsed() >= Duration::from_secs(1) {
+                let last = self.last.lock().ok().and_then(|l| *l);
+                let drawn = self.bar.lock().is_ok_and(|b| b.is_some());
+                if !drawn {
+                    self.draw(last.unwrap_or(Progress { stage: "running", done: 0, total: 1 }));
+                }
+                return;
+            }
+        }
     }
 
     fn finish(&self) {
@@ -129,7 +163,13 @@ fn cmd_run(scene: Option<&PathBuf>, out: Option<&PathBuf>, json: bool) -> Result
     let bar = Bar::new();
     let cb = |p: Progress| bar.update(p);
     let opts = RunOptions { progress: Some(&cb) };
-    let result = run(&scene, &opts);
+    let done = AtomicBool::new(false);
+    let result = std::thread::scope(|sc| {
+        sc.spawn(|| bar.watch(&done));
+        let r = run(&scene, &opts);
+        done.store(true, Ordering::Relaxed);
+        r
+    });
     bar.finish();
     let outcome = result?;
     if let Some(dir) = out {
@@ -157,16 +197,63 @@ fn cmd_run(scene: Option<&PathBuf>, out: Option<&PathBuf>, json: bool) -> Result
             "  forces: tangential = {:.6e} {fu}, moment = {:.6e} {mu}, rolling moment = {:.6e} {mu}",
             outcome.forces.tangential, outcome.forces.moment, outcome.forces.rolling_moment
         );
-        println!(
-            "  stick: {:?}  slip: {:?} ({})",
-            outcome.zones.stick, outcome.zones.slip, outcome.zones.coordinate
-        );
-        println!("  solver: {} ({:.3} s)", outcome.solver.method, outcome.solver.seconds);
+        println!("  {}", zones_line(&outcome.zones));
+        println!("  solver: {}", solver_line(&outcome.solver));
         if out.is_none() {
             println!("  (use --out DIR for result.json, CSV and plots, or --json)");
         }
     }
     Ok(())
+}
+
+/// The stick and slip zones in one line: element counts and the stick area fraction for
+/// grid solutions, intervals otherwise.
+fn zones_line(z: &Zones) -> String {
+    match &z.grid {
+        Some(g) => format!(
+            "stick: {} elements, slip: {} elements, stick area fraction {:.4} (grid of {} contact elements)",
+            g.stick,
+            g.slip,
+            g.stick_area_fraction,
+            g.stick + g.slip
+        ),
+        None => {
+            let list = |v: &[[f64; 2]]| -> String {
+                if v.is_empty() {
+                    "none".to_string()
+                } else {
+                    v.iter()
+                        .map(|i| format!("[{:.6e}, {:.6e}]", i[0], i[1]))
+                        .collect::<Vec<_>>()
+                        .join(" ")
+                }
+            };
+            format!("stick: {}  slip: {} ({})", list(&z.stick), list(&z.slip), z.coordinate)
+        }
+    }
+}
+
+/// The solver in one line: techniques, iterations and residual where a solver iterated, the
+/// grid solver's time, and the run's time.
+fn solver_line(s: &SolverOut) -> String {
+    let mut t = s.method.clone();
+    if s.elements > 0 {
+        t.push_str(&format!(
+            ", {} elements: {} iterations{}, residual {:.2e}, {:.3} s",
+            s.elements,
+            s.iterations,
+            if s.inner_iterations > 0 {
+                format!(" ({} CG)", s.inner_iterations)
+            } else {
+                String::new()
+            },
+            s.residual,
+            s.solve_seconds
+        ));
+    } else if s.iterations > 0 {
+        t.push_str(&format!(", {} iterations, residual {:.2e}", s.iterations, s.residual));
+    }
+    format!("{t} (run {:.3} s)", s.seconds)
 }
 
 fn cmd_explain(scene: Option<&PathBuf>) -> Result<(), SceneError> {

@@ -134,3 +134,31 @@ fn bad_input_exits_non_zero_with_location_and_leaves_nothing() {
     assert_eq!(entries(&d), vec!["bad.toml".to_string(), "impossible.toml".to_string()]);
     let _ = std::fs::remove_dir_all(&d);
 }
+
+#[test]
+fn grid_runs_print_element_counts_and_the_solver_and_explain_names_the_grid_solver() {
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes");
+    for (name, tag, choice) in [
+        ("seed002_ex4_square.toml", "LpForce", "modified LP"),
+        ("fast_two_patch_joint_fine.toml", "Fast", "fast solver"),
+    ] {
+        let o = bin().arg("run").arg(scenes.join(name)).output().unwrap();
+        let (so, se) = text(&o);
+        println!("{so}{se}");
+        assert!(o.status.success());
+        assert!(!so.contains("stick: []"), "{so}");
+        let line = so.lines().find(|l| l.trim_start().starts_with("stick:")).unwrap();
+        assert!(
+            line.contains(" elements, slip: ") && line.contains("stick area fraction"),
+            "{line}"
+        );
+        let solver = so.lines().find(|l| l.trim_start().starts_with("solver:")).unwrap();
+        assert!(solver.contains(tag) && solver.contains("iterations"), "{solver}");
+        let o = bin().arg("explain").arg(scenes.join(name)).output().unwrap();
+        let (so, _) = text(&o);
+        assert!(o.status.success());
+        let g = so.lines().find(|l| l.starts_with("grid solver:")).unwrap();
+        println!("{g}");
+        assert!(g.contains(choice), "{g}");
+    }
+}

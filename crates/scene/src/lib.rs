@@ -13,7 +13,9 @@
 //! - [`run()`]: the one code path from a scene to an [`Outcome`] (result.json), dispatching to
 //!   the physics crates for the effects that are on and nothing else ([`Evaluations`] counts
 //!   what ran);
-//! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing.
+//! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing;
+//! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
+//!   techniques per scene, from the planner alone.
 //!
 //! ```no_run
 //! use stickslip_scene::{run, RunOptions, Scene};
@@ -24,6 +26,7 @@
 
 mod error;
 mod output;
+mod overview;
 pub mod plan;
 mod plots;
 mod raw;
@@ -33,10 +36,11 @@ pub mod units;
 
 pub use error::{ErrorKind, SceneError};
 pub use output::{write_outputs, Written};
+pub use overview::scenes_page;
 pub use plan::{Cost, Effect, EffectPlan, Plan, Technique};
 pub use run::{
-    run, ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, Outcome, Progress,
-    RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
+    run, ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, GridZones, Outcome,
+    Progress, RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
 };
 pub use scene::{
     Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,

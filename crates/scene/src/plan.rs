@@ -6,11 +6,15 @@
 //! - for each of the eight effects of SCENES.md, whether it is on, with the reason;
 //! - for each effect that is on, the [`Technique`] that will compute it (a closed form where
 //!   one exists and applies, a numerical method otherwise, or what `solver.method` asks for);
-//! - an estimate of the cost (kernel evaluations, seconds, memory).
+//! - for 3D partial slip without a closed form, the grid solver and why: under
+//!   `method = "auto"` the modified LP up to [`MAX_LP_ELEMENTS`] contact elements, the fast
+//!   FFT solver beyond that or when a force and a moment act together ([`Plan::grid_solver`]);
+//! - an estimate of the cost (kernel evaluations, seconds, memory), refusing grids whose
+//!   memory would exceed [`MEMORY_LIMIT_BYTES`].
 //!
 //! It also refuses, before any computation, the combinations no solver in the workspace
-//! handles (a graded sphere, a twisting moment together with a tangential force, ...), each
-//! with the key to change and a hint. [`crate::run`] dispatches on the plan and nothing else,
+//! handles (a graded sphere, a twisting moment together with a tangential force by the LP,
+//! ...), each with the key to change and a hint. [`crate::run`] dispatches on the plan and nothing else,
 //! so an effect that is off is never evaluated.
 
 use std::fmt;
@@ -112,6 +116,12 @@ pub enum Technique {
     LpForce,
     /// The modified LP with the twist preprocessor (seed 002 §3.4).
     LpMoment,
+    /// The fast partial-slip solver (issue 6): semismooth Newton with projected conjugate
+    /// gradients, every influence product one zero-padded FFT convolution of the exact
+    /// rectangle coefficients (FORMULAS.md F); both traction components free on the Coulomb
+    /// disc $|\mathbf q| \le f p$, a force in any direction and a moment, alone or together:
+    /// `stickslip_traction::FastProblem`.
+    Fast,
     /// Lubkin torsion (FORMULAS.md G): `stickslip_traction::closed::Lubkin`.
     Lubkin,
     /// Carter's rolling closed form (FORMULAS.md D, elastic limit): `stickslip_rolling::carter`.
@@ -130,6 +140,61 @@ pub enum Technique {
 }
 
 impl Technique {
+    /// Every technique, in the order of declaration.
+    pub const ALL: [Technique; 22] = [
+        Technique::HertzLine,
+        Technique::GradedCylinder,
+        Technique::FlatPunch,
+        Technique::HertzSphere,
+        Technique::HertzEllipse,
+        Technique::EllipseGiven,
+        Technique::PatchPressure,
+        Technique::Sliding,
+        Technique::Cattaneo2d,
+        Technique::GradedPartialSlip,
+        Technique::Mindlin,
+        Technique::Cattaneo,
+        Technique::LpForce,
+        Technique::LpMoment,
+        Technique::Fast,
+        Technique::Lubkin,
+        Technique::Carter,
+        Technique::Goryacheva,
+        Technique::GradedKernels,
+        Technique::Deresiewicz,
+        Technique::McEwen,
+        Technique::StressQuadrature,
+    ];
+
+    /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
+    /// to the list).
+    pub fn index(self) -> usize {
+        match self {
+            Technique::HertzLine => 0,
+            Technique::GradedCylinder => 1,
+            Technique::FlatPunch => 2,
+            Technique::HertzSphere => 3,
+            Technique::HertzEllipse => 4,
+            Technique::EllipseGiven => 5,
+            Technique::PatchPressure => 6,
+            Technique::Sliding => 7,
+            Technique::Cattaneo2d => 8,
+            Technique::GradedPartialSlip => 9,
+            Technique::Mindlin => 10,
+            Technique::Cattaneo => 11,
+            Technique::LpForce => 12,
+            Technique::LpMoment => 13,
+            Technique::Fast => 14,
+            Technique::Lubkin => 15,
+            Technique::Carter => 16,
+            Technique::Goryacheva => 17,
+            Technique::GradedKernels => 18,
+            Technique::Deresiewicz => 19,
+            Technique::McEwen => 20,
+            Technique::StressQuadrature => 21,
+        }
+    }
+
     /// True for closed forms (including those with a one-dimensional quadrature of a bounded
     /// integrand, as Lubkin's $M(c)$).
     pub fn is_closed_form(self) -> bool {
@@ -137,6 +202,7 @@ impl Technique {
             self,
             Technique::LpForce
                 | Technique::LpMoment
+                | Technique::Fast
                 | Technique::Goryacheva
                 | Technique::GradedKernels
                 | Technique::StressQuadrature
@@ -165,6 +231,9 @@ impl Technique {
             Technique::LpForce => "modified LP on a contact grid (seed 002 Fig 3.5), numerical",
             Technique::LpMoment => {
                 "modified LP with the twist preprocessor (seed 002 3.4), numerical"
+            }
+            Technique::Fast => {
+                "fast solver on a contact grid (semismooth Newton + projected CG, FFT convolution), both traction components free, numerical"
             }
             Technique::Lubkin => "Lubkin torsion, M(c) by 1D quadrature (FORMULAS.md G)",
             Technique::Carter => "Carter, c = -a + 2 delta R / rho (FORMULAS.md D, elastic limit)",
@@ -214,8 +283,11 @@ pub struct Plan {
     pub effects: Vec<EffectPlan>,
     /// Points along the surface for 2D outputs (0 when surface output is off or 3D).
     pub surface_points: usize,
-    /// Elements of a 3D grid (LP, or closed forms sampled on a lattice).
+    /// Elements of a 3D grid (LP, fast solver, or closed forms sampled on a lattice).
     pub grid_elements: usize,
+    /// Which grid solver serves 3D partial slip (the modified LP or the fast solver) and
+    /// why; None when no grid solver runs.
+    pub grid_solver: Option<String>,
     /// Estimated cost.
     pub cost: Cost,
     /// Statements about modelling assumptions the user should know.
@@ -304,6 +376,9 @@ impl Plan {
         s.push_str("\neffects off:\n");
         for e in self.effects.iter().filter(|e| !e.on) {
             s.push_str(&format!("  {:<17} {}\n", e.effect.name(), e.reason));
+        }
+        if let Some(g) = &self.grid_solver {
+            s.push_str(&format!("\ngrid solver: {g}\n"));
         }
         if !self.notes.is_empty() {
             s.push_str("\nnotes:\n");
@@ -400,11 +475,11 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     }
 
     // ---- combinations no solver handles -------------------------------------------------
-    if method == Method::Fast {
+    if method == Method::Fast && (two_d || rolling) {
         return Err(unsupported(
             "solver.method",
-            "the fast (FFT) solver is not part of this version",
-            "use method = \"auto\", or \"lp\" for the modified LP on a grid",
+            "the fast solver works on 3D contact grids (sphere, ellipsoid, patches); 2D and rolling contacts use closed forms or quadrature",
+            "use method = \"auto\", \"closed-form\" or \"quadrature\"",
         ));
     }
     if visco == Some(true) && !rolling {
@@ -543,11 +618,14 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
                 "remove outputs.field, or use a cylinder",
             ));
         }
-        if l.tangential != 0.0 && l.moment != 0.0 {
+        if l.tangential != 0.0
+            && l.moment != 0.0
+            && matches!(method, Method::Lp | Method::ClosedForm)
+        {
             return Err(unsupported(
                 "load.moment",
-                "a tangential force and a twisting moment together are not solved (the LP takes one load mode)",
-                "give either load.tangential or load.moment",
+                "a tangential force and a twisting moment together have no closed form, and the LP takes one load mode",
+                "use method = \"fast\" (or \"auto\"), or give either load.tangential or load.moment",
             ));
         }
         if l.sliding && l.moment != 0.0 {
@@ -564,8 +642,8 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
         if method == Method::Quadrature && (l.tangential != 0.0 || l.moment != 0.0) {
             return Err(unsupported(
                 "solver.method",
-                "3D partial slip is solved by closed forms or the LP, not by quadrature",
-                "use method = \"auto\", \"closed-form\" or \"lp\"",
+                "3D partial slip is solved by closed forms or grid solvers (LP, fast), not by quadrature",
+                "use method = \"auto\", \"closed-form\", \"lp\" or \"fast\"",
             ));
         }
     }
@@ -584,14 +662,14 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
             return Err(unsupported(
                 "solver.method",
                 "patches under a tangential load have no closed form",
-                "use method = \"auto\" or \"lp\"",
+                "use method = \"auto\", \"lp\" or \"fast\"",
             ));
         }
         if matches!(g, Geometry::Ellipsoid(_)) && l.moment != 0.0 {
             return Err(unsupported(
                 "solver.method",
                 "twisting an ellipse has no closed form",
-                "use method = \"auto\" or \"lp\"",
+                "use method = \"auto\", \"lp\" or \"fast\"",
             ));
         }
         if matches!(g, Geometry::Ellipsoid(_))
@@ -642,6 +720,12 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     };
     effects.push(on(E::NormalContact, "always".to_string(), normal_t));
 
+    // The grid solver for 3D partial slip that has no closed form (or where one is asked for).
+    let both = l.tangential != 0.0 && l.moment != 0.0;
+    let elements = if two_d { 0 } else { lattice_elements(scene) };
+    let (grid_t, grid_reason) = grid_solver(method, elements, both);
+    let closed_ok = !matches!(method, Method::Lp | Method::Fast);
+
     // friction
     let f = l.friction;
     let friction_cause = if l.tangential != 0.0 {
@@ -661,16 +745,19 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
                 normal_t
             } else if l.sliding {
                 T::Sliding
-            } else if l.moment != 0.0 {
-                twist_technique(g, method)
+            } else if l.moment != 0.0 && l.tangential == 0.0 {
+                twist_technique(g, closed_ok, grid_t)
             } else {
                 match g {
                     Geometry::Cylinder { .. } if grading => T::GradedPartialSlip,
                     Geometry::Cylinder { .. } => T::Cattaneo2d,
-                    Geometry::Sphere { .. } if method != Method::Lp => T::Mindlin,
-                    Geometry::Ellipsoid(_) if method != Method::Lp && along_axis(l.direction_deg) => {
+                    Geometry::Sphere { .. } if closed_ok && !both => T::Mindlin,
+                    Geometry::Ellipsoid(_)
+                        if closed_ok && !both && along_axis(l.direction_deg) =>
+                    {
                         T::Cattaneo
                     }
+                    _ if grid_t == T::Fast => T::Fast,
                     _ => T::LpForce,
                 }
             };
@@ -732,7 +819,7 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
         effects.push(on(
             E::Twist,
             format!("moment M = {} N m", l.moment),
-            twist_technique(g, method),
+            if both { T::Fast } else { twist_technique(g, closed_ok, grid_t) },
         ));
     } else {
         effects.push(off(E::Twist, "no twisting moment".to_string()));
@@ -768,14 +855,35 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
 
     // ---- cost ----------------------------------------------------------------------------
     let surface_points = if two_d && scene.outputs.surface { SURFACE_POINTS } else { 0 };
-    let grid_elements = if two_d { 0 } else { lattice_elements(scene) };
+    let grid_elements = elements;
     let lp = effects.iter().any(|e| matches!(e.technique, Some(T::LpForce | T::LpMoment)));
+    let fast = effects.iter().any(|e| e.technique == Some(T::Fast));
     if lp && grid_elements > MAX_LP_ELEMENTS {
         return Err(issue(
             ErrorKind::OutOfRange,
             "solver.grid",
             format!("the dense LP on about {grid_elements} elements needs about {} of memory and minutes of pivoting", human_bytes(lp_memory(grid_elements))),
-            format!("use a grid with at most {MAX_LP_ELEMENTS} contact elements (solver.grid about {} for a circle)", ((MAX_LP_ELEMENTS as f64) / std::f64::consts::FRAC_PI_4).sqrt() as usize),
+            format!("use a grid with at most {MAX_LP_ELEMENTS} contact elements (solver.grid about {} for a circle), or method = \"fast\"", ((MAX_LP_ELEMENTS as f64) / std::f64::consts::FRAC_PI_4).sqrt() as usize),
+        ));
+    }
+    let grid_solver = (lp || fast).then(|| grid_reason.clone());
+    let cells = if two_d { 0 } else { lattice_cells(scene) };
+    // Memory of the 3D lattice arrays (result, JSON and CSV text) and of the fast solver.
+    let grid_memory = cells as u64 * OUTPUT_BYTES_PER_CELL
+        + if fast { fast_memory(cells, grid_elements) } else { 0 };
+    if grid_memory > MEMORY_LIMIT_BYTES {
+        let side = scene.solver.grid;
+        let max_side =
+            (side as f64 * (MEMORY_LIMIT_BYTES as f64 / grid_memory as f64).sqrt()) as usize;
+        return Err(issue(
+            ErrorKind::OutOfRange,
+            "solver.grid",
+            format!(
+                "grid = {side} gives a lattice of {cells} cells ({grid_elements} contact elements) needing about {} of memory, more than the {} a run may use",
+                human_bytes(grid_memory),
+                human_bytes(MEMORY_LIMIT_BYTES)
+            ),
+            format!("use solver.grid <= {max_side} for this scene"),
         ));
     }
     let mut evals: u64 = 1;
@@ -810,6 +918,11 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
             evals += n * n * 4;
             secs += (n * n) as f64 * 2e-7 + (n * n * n) as f64 * 2e-9;
             mem += lp_memory(grid_elements);
+        } else if fast {
+            // Each Newton step takes tens of CG iterations, one FFT product each; the count
+            // grows slowly with the grid (measured: see fast_seconds).
+            evals += n * FAST_PRODUCTS;
+            secs += fast_seconds(cells);
         } else if effects[E::Twist.index()].technique == Some(T::Lubkin) {
             evals += n * 200;
             secs += n as f64 * 4e-6;
@@ -822,9 +935,59 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
         effects,
         surface_points,
         grid_elements,
-        cost: Cost { evaluations: evals, seconds: secs, memory_bytes: mem },
+        grid_solver,
+        cost: Cost { evaluations: evals, seconds: secs, memory_bytes: mem + grid_memory },
         notes,
     })
+}
+
+/// The most memory a run may plan for: two thirds of a 24 GiB machine, leaving room for the
+/// operating system and for the error of the estimate. With the fast solver this admits
+/// grids up to about 5100 per side (about 12 GB at the measured rate) and refuses larger ones.
+pub const MEMORY_LIMIT_BYTES: u64 = 16 << 30;
+
+/// Result arrays per lattice cell of a 3D run: p, qx, qy and the stick flag in the result,
+/// their JSON tree for the finiteness check and the pretty JSON and CSV text.
+///
+/// Calibration (peak resident memory of `stickslip run --out` on the Mindlin sphere with the
+/// fast solver): 36 MB at grid 256, 129 MB at 512, 498 MB at 1024, i.e. 475 bytes per
+/// lattice cell in all. This constant and those of [`fast_memory`] add up to about 1.4
+/// times that, so the refusal errs on the safe side.
+const OUTPUT_BYTES_PER_CELL: u64 = 250;
+
+/// FFT products of a fast solve, roughly (for the evaluation count).
+const FAST_PRODUCTS: u64 = 300;
+
+/// Working memory of the fast solver for a lattice of `cells` cells with `elements` contact
+/// elements: the padded FFT lattice has about 4 cells per lattice cell (each side at least
+/// 2n - 1, rounded up to a 5-smooth size), holding three real kernel spectra and the
+/// convolution scratch; the Newton and CG vectors are per element. Calibrated with
+/// [`OUTPUT_BYTES_PER_CELL`] on measured peak memory.
+fn fast_memory(cells: usize, elements: usize) -> u64 {
+    cells as u64 * 200 + elements as u64 * 250
+}
+
+/// Seconds of a fast solve on a lattice of `cells` cells: measured on the Mindlin sphere
+/// (T/(fP) = 2/3, 2 shared cores) 1.7 s at 256^2, 12 s at 512^2, 91 s at 1024^2, i.e. about
+/// $1.7\,(N/256^2)^{1.45}$ s (FFT products cost N log N, their count grows with the grid).
+fn fast_seconds(cells: usize) -> f64 {
+    1.7 * (cells as f64 / 65536.0).powf(1.45)
+}
+
+/// Lattice cells of a 3D scene: `grid` x `grid` over the bounding box of a circle or
+/// ellipse; for patches, cells of side (largest extent)/`grid` over their bounding box.
+pub(crate) fn lattice_cells(scene: &Scene) -> usize {
+    let n = scene.solver.grid;
+    match &scene.geometry {
+        Geometry::Patches(ps) => {
+            let (lo, hi) = crate::run::patch_bounds(ps);
+            let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
+            let nx = ((hi[0] - lo[0]) / h).round().max(1.0) as usize;
+            let ny = ((hi[1] - lo[1]) / h).round().max(1.0) as usize;
+            nx * ny
+        }
+        _ => n * n,
+    }
 }
 
 fn lp_memory(n: usize) -> u64 {
@@ -832,9 +995,46 @@ fn lp_memory(n: usize) -> u64 {
     (8 * n * n * 8) as u64
 }
 
-fn twist_technique(g: &Geometry, method: Method) -> Technique {
+fn twist_technique(g: &Geometry, closed_ok: bool, grid: Technique) -> Technique {
     match g {
-        Geometry::Sphere { .. } if method != Method::Lp => Technique::Lubkin,
+        Geometry::Sphere { .. } if closed_ok => Technique::Lubkin,
+        _ if grid == Technique::Fast => Technique::Fast,
         _ => Technique::LpMoment,
+    }
+}
+
+/// The grid solver for 3D partial slip without a closed form, and why: what
+/// `solver.method` asks for, or under `"auto"` the modified LP up to [`MAX_LP_ELEMENTS`]
+/// contact elements (exact for its discretisation, seed 002) and the fast solver beyond it
+/// or when a force and a moment act together (the LP takes one load mode). Returns
+/// [`Technique::Fast`] or [`Technique::LpForce`] (standing for the LP in either load mode).
+fn grid_solver(method: Method, elements: usize, both: bool) -> (Technique, String) {
+    match method {
+        Method::Lp => (Technique::LpForce, "solver.method = \"lp\"".to_string()),
+        Method::Fast => (Technique::Fast, "solver.method = \"fast\"".to_string()),
+        _ if both => (
+            Technique::Fast,
+            "a tangential force and a twisting moment act together; the LP takes one load mode: the fast solver".to_string(),
+        ),
+        _ if elements > MAX_LP_ELEMENTS => (
+            Technique::Fast,
+            format!("about {elements} contact elements > {MAX_LP_ELEMENTS}, the dense LP's limit: the fast solver"),
+        ),
+        _ => (
+            Technique::LpForce,
+            format!("about {elements} contact elements <= {MAX_LP_ELEMENTS}: the modified LP (exact for its discretisation, seed 002)"),
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Technique;
+
+    #[test]
+    fn every_technique_is_listed_once_in_order() {
+        for (i, t) in Technique::ALL.iter().enumerate() {
+            assert_eq!(t.index(), i, "{t:?}");
+        }
     }
 }

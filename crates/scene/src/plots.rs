@@ -107,6 +107,36 @@ fn diverging(v: f64, vmax: f64) -> RGBColor {
     }
 }
 
+/// Most cells drawn along a side of a map: beyond it, square blocks of cells are merged so
+/// that an SVG of a fine grid stays a few MB (one rectangle per drawn cell).
+const MAX_CELLS_PER_SIDE: usize = 160;
+
+/// Cells merged per block along an axis of `n` cells.
+fn block(n: usize) -> usize {
+    n.div_ceil(MAX_CELLS_PER_SIDE).max(1)
+}
+
+/// Block centres of an axis: the mean of each run of `b` coordinates.
+fn coarse_axis(x: &[f64], b: usize) -> Vec<f64> {
+    x.chunks(b).map(|c| c.iter().sum::<f64>() / c.len() as f64).collect()
+}
+
+/// Block means of `v[j][i]` (rows along y, columns along x).
+fn coarse_rows(v: &[Vec<f64>], by: usize, bx: usize) -> Vec<Vec<f64>> {
+    v.chunks(by)
+        .map(|rows| {
+            let nx = rows[0].len();
+            (0..nx.div_ceil(bx))
+                .map(|ib| {
+                    let cols = ib * bx..((ib + 1) * bx).min(nx);
+                    let cnt = (rows.len() * cols.len()) as f64;
+                    rows.iter().map(|r| r[cols.clone()].iter().sum::<f64>()).sum::<f64>() / cnt
+                })
+                .collect()
+        })
+        .collect()
+}
+
 fn heat_map(
     title: &str,
     x: &[f64],
@@ -115,6 +145,18 @@ fn heat_map(
     yflip: bool,
     ylabel: &str,
 ) -> PlotResult {
+    let (bx, by) = (block(x.len()), block(y.len()));
+    if bx > 1 || by > 1 {
+        let title = format!("{title}, {bx} x {by} cell blocks");
+        return heat_map(
+            &title,
+            &coarse_axis(x, bx),
+            &coarse_axis(y, by),
+            &coarse_rows(v, by, bx),
+            yflip,
+            ylabel,
+        );
+    }
     let mut s = String::new();
     {
         let root = SVGBackend::with_string(&mut s, (720, 480)).into_drawing_area();
@@ -161,6 +203,36 @@ fn heat_map(
 }
 
 fn stick_map(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
+    let (bx, by) = (block(x.len()), block(y.len()));
+    if bx > 1 || by > 1 {
+        // A block sticks if most of its contact elements stick; outside if it has none.
+        let merged: Vec<Vec<i8>> = stick
+            .chunks(bx)
+            .map(|cols| {
+                (0..y.len().div_ceil(by))
+                    .map(|jb| {
+                        let rows = jb * by..((jb + 1) * by).min(y.len());
+                        let (mut st, mut sl) = (0usize, 0usize);
+                        for c in cols {
+                            for v in &c[rows.clone()] {
+                                match v {
+                                    1 => st += 1,
+                                    0 => sl += 1,
+                                    _ => {}
+                                }
+                            }
+                        }
+                        if st + sl == 0 {
+                            -1
+                        } else {
+                            i8::from(st >= sl)
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        return stick_map(&coarse_axis(x, bx), &coarse_axis(y, by), &merged);
+    }
     let mut s = String::new();
     {
         let root = SVGBackend::with_string(&mut s, (600, 600)).into_drawing_area();
@@ -191,11 +263,13 @@ fn stick_map(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
                 (st >= 0).then_some((xx, yy, st))
             })
         });
+        // Coarse grids show each element with a thin gap; fine ones edge to edge.
+        let half = if x.len().max(y.len()) > 40 { 0.5 } else { 0.45 };
         chart
             .draw_series(cells.map(|(xx, yy, st)| {
                 let c = if st == 1 { RGBColor(70, 110, 220) } else { RGBColor(220, 80, 60) };
                 Rectangle::new(
-                    [(xx - 0.45 * hx, yy - 0.45 * hy), (xx + 0.45 * hx, yy + 0.45 * hy)],
+                    [(xx - half * hx, yy - half * hy), (xx + half * hx, yy + half * hy)],
                     c.filled(),
                 )
             }))

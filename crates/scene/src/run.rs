@@ -24,9 +24,10 @@ use stickslip_halfspace::mcewen::HertzTraction;
 use stickslip_halfspace::{Material, Stress2};
 use stickslip_rolling::{CarterParams, GoryachevaParams, Regime as RollRegime, StressConfig};
 use stickslip_traction::closed::{Cattaneo, Deresiewicz, Lubkin, Mindlin};
+use stickslip_traction::fast::TensorConvolution;
 use stickslip_traction::{
-    ContactGrid, ElementState, Load as LpLoad, Patch as GridPatch, PatchPressure, Shape,
-    TractionProblem,
+    ContactGrid, ElementState, FastConfig, FastLoad, FastProblem, FastSolution, InfluenceModel,
+    Load as LpLoad, Patch as GridPatch, PatchPressure, Shape, TractionProblem,
 };
 
 use crate::error::{ErrorKind, SceneError};
@@ -134,8 +135,32 @@ pub struct Zones {
     /// Slip intervals.
     pub slip: Vec<[f64; 2]>,
     /// What the intervals are measured along: "x", "radius", "x along the load", or "grid"
-    /// (3D grid solutions: see `surface.stick`).
+    /// (3D grid solutions: the counts are in `grid`, the map in `surface.stick`).
     pub coordinate: &'static str,
+    /// Element counts of a grid solution (the LP or the fast solver); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid: Option<GridZones>,
+}
+
+/// Stick and slip element counts of a grid solution.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GridZones {
+    /// Elements that stick.
+    pub stick: usize,
+    /// Elements that slip.
+    pub slip: usize,
+    /// Stick area over contact area (equal elements: stick / (stick + slip)).
+    pub stick_area_fraction: f64,
+}
+
+impl GridZones {
+    fn from_states(states: &[ElementState]) -> Self {
+        let stick = states.iter().filter(|s| **s == ElementState::Stick).count();
+        let slip = states.len() - stick;
+        let stick_area_fraction =
+            if states.is_empty() { 0.0 } else { stick as f64 / states.len() as f64 };
+        GridZones { stick, slip, stick_area_fraction }
+    }
 }
 
 /// `forces` in result.json.
@@ -220,10 +245,20 @@ pub struct FieldOut {
 pub struct SolverOut {
     /// The techniques used (per effect), joined.
     pub method: String,
-    /// Iterations (LP pivots, root-solver iterations), 0 for closed forms.
+    /// Iterations (LP pivots, fast-solver Newton steps, root-solver iterations), 0 for
+    /// closed forms.
     pub iterations: usize,
-    /// Residual of the last iterative solve, 0 for closed forms.
+    /// Inner iterations: conjugate-gradient iterations summed over the fast solver's Newton
+    /// steps; 0 otherwise.
+    pub inner_iterations: usize,
+    /// Residual of the last iterative solve, 0 for closed forms (the fast solver: relative
+    /// complementarity residual $\lVert\mathbf r\rVert/\lVert\mathbf q\rVert$; the LP:
+    /// the load in excess of the friction capacity).
     pub residual: f64,
+    /// Elements of the grid solver (LP or fast), 0 when none ran.
+    pub elements: usize,
+    /// Wall time of the grid solver including its set-up (s), 0 when none ran.
+    pub solve_seconds: f64,
     /// Wall time of the run (s).
     pub seconds: f64,
 }
@@ -344,7 +379,10 @@ struct Ctx<'a> {
     notes: Vec<String>,
     opts: RunOptions<'a>,
     iterations: usize,
+    inner_iterations: usize,
     residual: f64,
+    elements: usize,
+    solve_seconds: f64,
 }
 
 impl Ctx<'_> {
@@ -371,18 +409,27 @@ pub fn run(scene: &Scene, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> 
     }
     let mut cx = Ctx {
         ev: Evaluations::default(),
-        notes: plan.notes.clone(),
+        notes: plan
+            .notes
+            .iter()
+            .cloned()
+            .chain(plan.grid_solver.as_ref().map(|g| format!("grid solver: {g}")))
+            .collect(),
         opts: *opts,
         iterations: 0,
+        inner_iterations: 0,
         residual: 0.0,
+        elements: 0,
+        solve_seconds: 0.0,
     };
     let parts = if matches!(scene.motion, Motion::Rolling { .. }) {
-        run_rolling(scene, &plan, &mut cx)?
+        run_rolling(scene, &plan, &mut cx)
     } else if scene.geometry.is_2d() {
-        run_line(scene, &plan, &mut cx)?
+        run_line(scene, &plan, &mut cx)
     } else {
-        run_3d(scene, &plan, &mut cx)?
-    };
+        run_3d(scene, &plan, &mut cx)
+    }
+    .map_err(|e| e.in_file(scene.file.clone()))?;
     let mut effects =
         EffectsOut { on: Vec::new(), off: Default::default(), methods: Default::default() };
     let mut methods = Vec::new();
@@ -412,7 +459,10 @@ pub fn run(scene: &Scene, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> 
         solver: SolverOut {
             method: methods.join(" + "),
             iterations: cx.iterations,
+            inner_iterations: cx.inner_iterations,
             residual: cx.residual,
+            elements: cx.elements,
+            solve_seconds: cx.solve_seconds,
             seconds: t0.elapsed().as_secs_f64(),
         },
         rolling: parts.rolling,
@@ -866,19 +916,20 @@ fn run_line(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, Scene
     // ---- zones
     let zones = if fr.is_none() {
         if f > 0.0 {
-            Zones { stick: vec![[-a, a]], slip: vec![], coordinate: "x" }
+            Zones { stick: vec![[-a, a]], slip: vec![], coordinate: "x", grid: None }
         } else {
-            Zones { stick: vec![], slip: vec![[-a, a]], coordinate: "x" }
+            Zones { stick: vec![], slip: vec![[-a, a]], coordinate: "x", grid: None }
         }
     } else if c_stick <= 0.0 {
-        Zones { stick: vec![], slip: vec![[-a, a]], coordinate: "x" }
+        Zones { stick: vec![], slip: vec![[-a, a]], coordinate: "x", grid: None }
     } else if c_stick >= a {
-        Zones { stick: vec![[-a, a]], slip: vec![], coordinate: "x" }
+        Zones { stick: vec![[-a, a]], slip: vec![], coordinate: "x", grid: None }
     } else {
         Zones {
             stick: vec![[-c_stick, c_stick]],
             slip: vec![[-a, -c_stick], [c_stick, a]],
             coordinate: "x",
+            grid: None,
         }
     };
 
@@ -892,6 +943,99 @@ fn run_line(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, Scene
         rolling: None,
         cycle: None,
     })
+}
+
+/// A fast-solver error as a scene error: a load beyond the friction capacity is an impossible
+/// scene (key `load.tangential` or `load.moment`), an unconverged iteration names
+/// `solver.tolerance`; anything else is a solver failure.
+fn fast_err(e: stickslip_traction::Error) -> SceneError {
+    use stickslip_traction::Error as E;
+    match &e {
+        E::OutOfDomain { name, .. } if name.contains("capacity") || name.contains("(f P)") => {
+            let key = if name.contains("moment") { "load.moment" } else { "load.tangential" };
+            SceneError::new(
+                ErrorKind::Impossible,
+                format!("the load exceeds what friction can carry: {e}"),
+            )
+            .key(key)
+            .hint("reduce the load: a force alone is carried up to f P, a moment alone up to the spin capacity, and less of each when both act")
+        }
+        E::OutOfDomain { name, .. } if name.contains("no stick component") => {
+            SceneError::new(
+                ErrorKind::Solver,
+                format!("the load is at or near what friction can carry: {e}"),
+            )
+            .key("load.tangential")
+            .hint("reduce load.tangential or load.moment: together they are carried only below gross slip, which comes before f P and the spin capacity are each reached")
+        }
+        E::NotConverged { .. } => {
+            SceneError::new(ErrorKind::Solver, format!("fast solver: {e}"))
+                .key("solver.tolerance")
+                .hint("raise solver.tolerance (e.g. 1e-8), or change solver.grid")
+        }
+        _ => solver_err("fast solver", e),
+    }
+}
+
+/// The substrate's share of the rigid shift (force) or rotation (moment) of a fast solution:
+/// $\sum_{stick} \mathbf m\cdot\mathbf u^{(1)}_k / \sum_{stick} \mathbf m\cdot\mathbf u_k$,
+/// with $\mathbf m$ the unit load direction (force) or $\hat z\times(\mathbf x_k-\mathbf c)/
+/// |\mathbf x_k-\mathbf c|^2$ (moment), $\mathbf u^{(1)}$ the substrate's own displacement
+/// and $\mathbf u$ the relative one: on the stick zone $\mathbf u$ is the rigid motion, so
+/// this is the per-body mean the LP reports (FORMULAS.md F: $A = A^{(1)} + A^{(2)}$). Exactly
+/// 1/2 for identical bodies, 1 under a rigid indenter; otherwise one extra FFT product.
+fn substrate_share(
+    grid: &ContactGrid,
+    sol: &FastSolution,
+    bodies: [&Material; 2],
+    scene: &Scene,
+    force: bool,
+) -> Result<f64, SceneError> {
+    if bodies[1].is_rigid() {
+        return Ok(1.0);
+    }
+    if bodies[0].is_rigid() {
+        return Ok(0.0);
+    }
+    if crate::plan::identical_materials(scene) {
+        return Ok(0.5);
+    }
+    let op = TensorConvolution::new(grid, &bodies[0].compliance(), InfluenceModel::default())
+        .map_err(|e| solver_err("substrate operator", e))?;
+    let mut scratch = op.make_scratch();
+    let n = grid.len();
+    let qx: Vec<f64> = sol.traction.iter().map(|q| q.0).collect();
+    let qy: Vec<f64> = sol.traction.iter().map(|q| q.1).collect();
+    let (mut ux, mut uy) = (vec![0.0; n], vec![0.0; n]);
+    op.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
+    let (c, s) = {
+        let t = sol.shift.0.hypot(sol.shift.1);
+        if t > 0.0 {
+            (sol.shift.0 / t, sol.shift.1 / t)
+        } else {
+            (1.0, 0.0)
+        }
+    };
+    let any_stick = sol.state.contains(&ElementState::Stick);
+    let (mut own, mut all) = (0.0, 0.0);
+    for k in 0..n {
+        if any_stick && sol.state[k] != ElementState::Stick {
+            continue;
+        }
+        let m = if force {
+            (c, s)
+        } else {
+            let (dx, dy) = (grid.x[k] - sol.centre.0, grid.y[k] - sol.centre.1);
+            let r2 = dx * dx + dy * dy;
+            if r2 == 0.0 {
+                continue;
+            }
+            (-dy / r2, dx / r2)
+        };
+        own += m.0 * ux[k] + m.1 * uy[k];
+        all += m.0 * sol.displacement[k].0 + m.1 * sol.displacement[k].1;
+    }
+    Ok(if all != 0.0 { own / all } else { 0.5 })
 }
 
 fn unreachable_plan<T>() -> Result<T, SceneError> {
@@ -1010,12 +1154,13 @@ fn run_rolling(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, Sc
             stick: vec![[stick_start, front]],
             slip: vec![[-rear, stick_start]],
             coordinate: "x",
+            grid: None,
         },
         RollRegime::FullSlip => {
-            Zones { stick: vec![], slip: vec![[-rear, front]], coordinate: "x" }
+            Zones { stick: vec![], slip: vec![[-rear, front]], coordinate: "x", grid: None }
         }
         RollRegime::FullStick => {
-            Zones { stick: vec![[-rear, front]], slip: vec![], coordinate: "x" }
+            Zones { stick: vec![[-rear, front]], slip: vec![], coordinate: "x", grid: None }
         }
     };
     cx.notes.push("rolling: the cylinder moves in +x, the contact is (-a, b) with the trailing edge at -a; q is Goryacheva's tau_xy on the base (FORMULAS.md D); surface displacements are not computed for rolling".to_string());
@@ -1218,7 +1363,7 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
     let mut tangential = 0.0;
     let mut moment = 0.0;
     let mut rigid = RigidOut { tangential: None, rotation: None, per_body: None };
-    let mut zones = Zones { stick: vec![], slip: vec![], coordinate: "grid" };
+    let mut zones = Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: None };
     if f == 0.0 {
         for row in &mut lat.stick {
             for s in row.iter_mut().filter(|s| **s == 1) {
@@ -1246,6 +1391,7 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
                 stick: vec![],
                 slip: vec![[0.0, 1.0]],
                 coordinate: "fraction of the contact (all slips)",
+                grid: None,
             };
         }
         Some(Technique::Mindlin) => {
@@ -1268,8 +1414,12 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
             }
             let d = [m.compliance_per_body(&sub), m.compliance_per_body(&ind)];
             rigid = RigidOut { tangential: Some(d[0] + d[1]), rotation: None, per_body: Some(d) };
-            zones =
-                Zones { stick: vec![[0.0, astar]], slip: vec![[astar, ax]], coordinate: "radius" };
+            zones = Zones {
+                stick: vec![[0.0, astar]],
+                slip: vec![[astar, ax]],
+                coordinate: "radius",
+                grid: None,
+            };
         }
         Some(Technique::Cattaneo) => {
             // Along x: a = ax is the semi-axis along the load; along y: swap.
@@ -1302,6 +1452,7 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
                 stick: vec![[-sc * al, sc * al]],
                 slip: vec![[-al, -sc * al], [sc * al, al]],
                 coordinate: "x along the load",
+                grid: None,
             };
         }
         Some(Technique::Lubkin) => {
@@ -1336,7 +1487,12 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
                 rotation: Some(sign * (w[0] + w[1])),
                 per_body: Some([sign * w[0], sign * w[1]]),
             };
-            zones = Zones { stick: vec![[0.0, c]], slip: vec![[c, ax]], coordinate: "radius" };
+            zones = Zones {
+                stick: vec![[0.0, c]],
+                slip: vec![[c, ax]],
+                coordinate: "radius",
+                grid: None,
+            };
         }
         Some(Technique::LpForce | Technique::LpMoment) => {
             let load_mode = if fr == Some(Technique::LpMoment) {
@@ -1345,10 +1501,13 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
                 LpLoad::Force { magnitude: tmag, angle: dir }
             };
             cx.progress("modified LP", 0, 1);
+            let ts = Instant::now();
             let sol = TractionProblem::new(&grid, [sub, ind], f, load_mode)
                 .map_err(|e| solver_err("traction problem", e))?
                 .solve()
                 .map_err(|e| solver_err("modified LP", e))?;
+            cx.solve_seconds = ts.elapsed().as_secs_f64();
+            cx.elements = grid.len();
             cx.progress("modified LP", 1, 1);
             cx.ev.friction += grid.len() as u64;
             if tw.is_some() {
@@ -1395,7 +1554,90 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
                     .collect::<Vec<_>>()
                     .join("; ")
             ));
-            zones = Zones { stick: vec![], slip: vec![], coordinate: "grid" };
+            zones = Zones {
+                stick: vec![],
+                slip: vec![],
+                coordinate: "grid",
+                grid: Some(GridZones::from_states(&sol.state)),
+            };
+        }
+        Some(Technique::Fast) => {
+            let force = l.tangential != 0.0;
+            let twist = l.moment != 0.0;
+            let mut load = FastLoad::polar(if force { tmag } else { 0.0 }, dir)
+                .map_err(|e| solver_err("fast solver load", e))?;
+            if twist {
+                load = load
+                    .with_moment(l.moment, None)
+                    .map_err(|e| solver_err("fast solver load", e))?;
+            }
+            let config = FastConfig::new(scene.solver.tolerance.clamp(1e-14, 1e-1), 100)
+                .map_err(|e| solver_err("fast solver configuration", e))?;
+            cx.progress("fast solver", 0, 1);
+            let ts = Instant::now();
+            let sol = FastProblem::new(&grid, [sub, ind], f, load)
+                .map_err(fast_err)?
+                .with_config(config)
+                .solve()
+                .map_err(fast_err)?;
+            cx.progress("fast solver", 1, 1);
+            cx.ev.friction += grid.len() as u64;
+            if tw.is_some() {
+                cx.ev.twist += grid.len() as u64;
+            }
+            // The rigid motion: the shift along the force, or the rotation.
+            let e = (dir.cos(), dir.sin());
+            let total = if force { sol.shift.0 * e.0 + sol.shift.1 * e.1 } else { sol.rotation };
+            let share = substrate_share(&grid, &sol, [&sub, &ind], scene, force)?;
+            cx.solve_seconds = ts.elapsed().as_secs_f64();
+            cx.elements = grid.len();
+            cx.iterations = sol.info.iterations;
+            cx.inner_iterations = sol.info.cg_iterations;
+            cx.residual = sol.info.residual;
+            for kk in 0..grid.len() {
+                if let Some((i, j)) = lat.index(grid.x[kk], grid.y[kk]) {
+                    (lat.qx[i][j], lat.qy[i][j]) = sol.traction[kk];
+                    lat.stick[i][j] = i8::from(sol.state[kk] == ElementState::Stick);
+                }
+            }
+            let per_body = Some([share * total, (1.0 - share) * total]);
+            tangential = if force { l.tangential } else { 0.0 };
+            moment = if twist { l.moment } else { 0.0 };
+            rigid = RigidOut {
+                tangential: force.then_some(total),
+                rotation: twist.then_some(sol.rotation),
+                per_body,
+            };
+            let gz = GridZones::from_states(&sol.state);
+            let across = -sol.shift.0 * e.1 + sol.shift.1 * e.0;
+            cx.notes.push(format!(
+                "fast solver on {} elements ({} stick, {} slip; {:?}): {} Newton steps, {} CG iterations, {} FFT products on a {} x {} padded lattice; residual {:.3e}, load residual {:.3e}; set-up {:.3} s, iteration {:.3} s; resultant ({:.6e}, {:.6e}) N, moment {:.6e} N m about ({:.6e}, {:.6e}) m; shift across the load {:.3e} m{}",
+                grid.len(),
+                gz.stick,
+                gz.slip,
+                sol.regime,
+                sol.info.iterations,
+                sol.info.cg_iterations,
+                sol.info.products,
+                sol.info.fft_size.0,
+                sol.info.fft_size.1,
+                sol.info.residual,
+                sol.info.load_residual,
+                sol.info.setup_seconds,
+                sol.info.seconds,
+                sol.resultant.0,
+                sol.resultant.1,
+                sol.moment,
+                sol.centre.0,
+                sol.centre.1,
+                across,
+                if force && twist {
+                    "; per-body shares are of the shift (both the shift and the rotation are reported)"
+                } else {
+                    ""
+                }
+            ));
+            zones = Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: Some(gz) };
         }
         Some(_) => return unreachable_plan(),
     }
@@ -1423,7 +1665,7 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
         zones,
         forces: Forces { normal: load, tangential, moment, rolling_moment: 0.0 },
         rigid,
-        surface: if scene.outputs.surface || lp {
+        surface: if scene.outputs.surface || lp || fr == Some(Technique::Fast) {
             lat.into_surface()
         } else {
             Lattice::new(0.0, 0.0, 1.0, 1.0, 0, 0).into_surface()

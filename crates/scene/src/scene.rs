@@ -331,9 +331,11 @@ pub struct Scene {
     pub solver: SolverOptions,
 }
 
-/// The largest grid side the solvers accept: 2048^2 = 4.2 million elements is about 100 MB
-/// per array, which the fast solver handles; beyond, memory (24 GiB machines) runs out.
-pub const MAX_GRID: usize = 2048;
+/// The largest grid side the scene format accepts. Whether a grid fits is decided by the
+/// planner's memory estimate ([`crate::plan::MEMORY_LIMIT_BYTES`]): a 3D lattice costs
+/// about 650 bytes per cell with the fast solver (estimate), so grids of about 5100 per side
+/// and more are refused there; this bound only keeps the arithmetic far from overflow.
+pub const MAX_GRID: usize = 16384;
 
 /// The built-in default scene: the rigid roller of seed 000, Table 1 (FORMULAS.md A4).
 pub const DEFAULT_SCENE: &str = r#"title = "Rigid roller on a power-law graded substrate (seed 000, Table 1)"
@@ -1118,7 +1120,7 @@ fn convert_solver(
         if !(4..=MAX_GRID as i64).contains(&v) {
             return Err(cx
                 .err(ErrorKind::OutOfRange, "solver.grid", Some(g.span()), format!("grid = {v} elements per side is not allowed"))
-                .hint(format!("4 <= grid <= {MAX_GRID}; {MAX_GRID}^2 elements already need about 1 GB of solver memory")));
+                .hint(format!("4 <= grid <= {MAX_GRID}; grids whose working memory would exceed 16 GiB are refused by the planner (about 5100 per side for the fast solver)")));
         }
         out.grid = v as usize;
     }

@@ -307,6 +307,74 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             expect("moment of the element tractions", mz, 40.0, 1e-6);
             assert!(cone_violation(out, 0.12) < tol::CONE);
         }
+        "fast_mindlin_sphere_256.toml" => {
+            // Issue 6's target: the rigid shift within 0.5 % of Mindlin, the stick radius
+            // within one cell, the residual at most 1e-8 (FORMULAS.md E).
+            let (p, f, t) = (2160.0 * LBF, 0.1, 144.0 * LBF);
+            let steel = stickslip_halfspace::Material::new(30e6 * PSI, 0.3).unwrap();
+            let m = stickslip_traction::closed::Mindlin::new(c.a, p, f, t).unwrap();
+            let delta = m.compliance_relative(&steel, &steel);
+            let got = out.rigid_displacement.tangential.unwrap();
+            expect("fast shift vs Mindlin", got, delta, tol::FAST_SHIFT);
+            let pb = out.rigid_displacement.per_body.unwrap();
+            expect(
+                "fast per-body shift vs seed 002 (in)",
+                pb[0] / INCH,
+                0.671394e-4,
+                tol::FAST_SHIFT,
+            );
+            let g = out.zones.grid.unwrap();
+            let h = 2.0 * c.a / 256.0;
+            let r_stick = (g.stick as f64 * h * h / PI).sqrt();
+            let cells = (r_stick - m.stick_radius()) / h;
+            report.borrow_mut().push(format!(
+                "{name}: stick radius (area-equivalent) {r_stick:.6e} vs a* {:.6e}: {cells:+.3} cells; {} elements, {} Newton steps, {} CG, residual {:.2e}, solve {:.2} s",
+                m.stick_radius(),
+                out.solver.elements,
+                out.solver.iterations,
+                out.solver.inner_iterations,
+                out.solver.residual,
+                out.solver.solve_seconds
+            ));
+            assert!(cells.abs() <= 1.0, "{cells}");
+            assert!(out.solver.residual <= tol::FAST_RESIDUAL, "{}", out.solver.residual);
+            assert!(out.solver.iterations > 0 && out.solver.inner_iterations > 0);
+            let (fx, fy, _, _) = grid_resultant(out);
+            expect("sum of element tractions = T", fx.hypot(fy), t, tol::FAST_LOAD);
+            assert!(cone_violation(out, f) < tol::CONE);
+        }
+        "fast_gasket_ring_force_and_twist.toml" => {
+            let (fx, fy, mz, _) = grid_resultant(out);
+            expect(
+                "|sum of element tractions| = T",
+                fx.hypot(fy),
+                scene.load.tangential,
+                tol::FAST_LOAD,
+            );
+            let dir = fy.atan2(fx).to_degrees();
+            expect("resultant direction (deg)", dir, 30.0, tol::FAST_LOAD);
+            // The frame is symmetric about the origin: the moment about its centroid.
+            expect("moment of the element tractions", mz, 80.0, tol::FAST_LOAD);
+            assert!(cone_violation(out, 0.15) < tol::CONE);
+            let g = out.zones.grid.unwrap();
+            assert_eq!(g.stick + g.slip, 17500);
+            assert!(g.stick > 0 && g.slip > 0, "partial slip expected: {g:?}");
+            assert!(out.rigid_displacement.tangential.is_some());
+            assert!(out.rigid_displacement.rotation.unwrap() > 0.0);
+        }
+        "fast_two_patch_joint_fine.toml" => {
+            let (fx, fy, _, _) = grid_resultant(out);
+            expect(
+                "|sum of element tractions| = T",
+                fx.hypot(fy),
+                scene.load.tangential,
+                tol::FAST_LOAD,
+            );
+            expect("resultant direction (deg)", fy.atan2(fx).to_degrees(), 45.0, tol::FAST_LOAD);
+            assert!(cone_violation(out, 0.12) < tol::CONE);
+            expect("P = sum p A", c.normal_load, 22000.0 * PSI * 0.36 * INCH * INCH, tol::CLOSED);
+            assert_eq!(out.solver.elements, 11250);
+        }
         "seed000_frictionless_roller.toml" => {
             expect("P", c.normal_load, 986.39 * 9.80665, tol::QUOTED5);
             let (_, _, q, _, _) = line(out);
