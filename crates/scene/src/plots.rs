@@ -60,8 +60,8 @@ fn line_chart(
             .configure_mesh()
             .x_desc(xlabel)
             .y_desc(ylabel)
-            .x_label_formatter(&|v| format!("{v:.3e}"))
-            .y_label_formatter(&|v| format!("{v:.3e}"))
+            .x_label_formatter(&|v| tick(*v, x1 - x0))
+            .y_label_formatter(&|v| tick(*v, y1 - y0))
             .draw()
             .map_err(err)?;
         for &(a, b, col) in bands {
@@ -179,8 +179,8 @@ fn heat_map(
             .disable_mesh()
             .x_desc("x (m)")
             .y_desc(ylabel)
-            .x_label_formatter(&|v| format!("{v:.3e}"))
-            .y_label_formatter(&|v| format!("{v:.3e}"))
+            .x_label_formatter(&|v| tick(*v, xb - xa))
+            .y_label_formatter(&|v| tick(*v, yb - ya))
             .draw()
             .map_err(err)?;
         // v is indexed [row j along y][column i along x] for fields.
@@ -253,8 +253,8 @@ fn stick_map(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
             .disable_mesh()
             .x_desc("x (m)")
             .y_desc("y (m)")
-            .x_label_formatter(&|v| format!("{v:.3e}"))
-            .y_label_formatter(&|v| format!("{v:.3e}"))
+            .x_label_formatter(&|v| tick(*v, xb - xa))
+            .y_label_formatter(&|v| tick(*v, yb - ya))
             .draw()
             .map_err(err)?;
         let cells = x.iter().enumerate().flat_map(|(i, &xx)| {
@@ -389,4 +389,15 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
         ));
     }
     Ok(files)
+}
+
+/// Axis tick label: three significant digits in exponent form. A tick within 1e-9 of the axis
+/// span of zero is the zero tick with rounding from the tick arithmetic (plotters gives e.g.
+/// 3.5e-18 on an axis spanning 5e-2) and prints as 0.
+fn tick(v: f64, span: f64) -> String {
+    if v.abs() <= 1e-9 * span.abs() {
+        "0".to_string()
+    } else {
+        format!("{v:.3e}")
+    }
 }
