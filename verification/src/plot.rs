@@ -31,8 +31,18 @@ fn err(name: &str, e: impl std::fmt::Display) -> Error {
     Error::Plot { name: name.into(), message: e.to_string() }
 }
 
+/// Axis tick label with 4 significant digits; a tick within 1e-9 of the axis span of zero is
+/// the zero tick with rounding from the tick arithmetic and prints as 0.
+fn tick(v: f64, span: f64) -> String {
+    if v.abs() <= 1e-9 * span.abs() {
+        "0".to_string()
+    } else {
+        sig(v, 4)
+    }
+}
+
 /// The SVG text of a figure: computed curves as lines, computed discrete values as hollow
-/// circles, published points as black crosses.
+/// circles, published points as black crosses (a second published series as triangles).
 pub(crate) fn svg(fig: &Figure) -> Result<String, Error> {
     let mut out = String::new();
     {
@@ -52,10 +62,11 @@ pub(crate) fn svg(fig: &Figure) -> Result<String, Error> {
             .configure_mesh()
             .x_desc(fig.x_label.as_str())
             .y_desc(fig.y_label.as_str())
-            .x_label_formatter(&|v| sig(*v, 4))
-            .y_label_formatter(&|v| sig(*v, 4))
+            .x_label_formatter(&|v| tick(*v, x1 - x0))
+            .y_label_formatter(&|v| tick(*v, y1 - y0))
             .draw()
             .map_err(|e| err(&fig.name, e))?;
+        let mut published_seen = 0;
         for (i, s) in fig.series.iter().enumerate() {
             let c = PALETTE[i % PALETTE.len()];
             let data: Vec<(f64, f64)> =
@@ -77,7 +88,8 @@ pub(crate) fn svg(fig: &Figure) -> Result<String, Error> {
                         .label(s.label.as_str())
                         .legend(move |(x, y)| Circle::new((x + 8, y), 3, c.stroke_width(1)));
                 }
-                Style::Published => {
+                Style::Published if published_seen % 2 == 0 => {
+                    published_seen += 1;
                     chart
                         .draw_series(
                             data.into_iter().map(|p| Cross::new(p, 5, BLACK.stroke_width(2))),
@@ -85,6 +97,21 @@ pub(crate) fn svg(fig: &Figure) -> Result<String, Error> {
                         .map_err(|e| err(&fig.name, e))?
                         .label(s.label.as_str())
                         .legend(move |(x, y)| Cross::new((x + 8, y), 5, BLACK.stroke_width(2)));
+                }
+                Style::Published => {
+                    // A second published series in the same figure (e.g. Table 2's two rows)
+                    // gets a different black marker so the two can be told apart.
+                    published_seen += 1;
+                    chart
+                        .draw_series(
+                            data.into_iter()
+                                .map(|p| TriangleMarker::new(p, 5, BLACK.stroke_width(1))),
+                        )
+                        .map_err(|e| err(&fig.name, e))?
+                        .label(s.label.as_str())
+                        .legend(move |(x, y)| {
+                            TriangleMarker::new((x + 8, y), 5, BLACK.stroke_width(1))
+                        });
                 }
             }
         }
