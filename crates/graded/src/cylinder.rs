@@ -66,7 +66,9 @@ pub struct RigidCylinder {
 }
 
 impl RigidCylinder {
-    /// Solve for the contact under load $P$ per unit length.
+    /// Solve for the contact under load $P$ per unit length: $a$ from the corrected seed 000
+    /// eq 15 ([`half_width_from_load`]) and $p_0 = P/(a\,B(\tfrac12,\tfrac{3+k}{2}))$
+    /// (FORMULAS.md A4).
     ///
     /// # Errors
     /// As [`half_width_from_load`].
@@ -75,7 +77,9 @@ impl RigidCylinder {
         Ok(Self::build(m, radius, a, load))
     }
 
-    /// Solve for the contact of half-width $a$.
+    /// Solve for the contact of half-width $a$: $P$ from the corrected seed 000 eq 15
+    /// ([`load_from_half_width`]) and $p_0 = P/(a\,B(\tfrac12,\tfrac{3+k}{2}))$
+    /// (FORMULAS.md A4).
     ///
     /// # Errors
     /// As [`load_from_half_width`].
@@ -131,7 +135,8 @@ impl RigidCylinder {
     }
 
     /// The load for [`crate::StressField`] / [`crate::SurfaceDisplacement`]: this pressure
-    /// with sliding friction $q = \mu p$.
+    /// with sliding friction, $p(s) = p_0(1-s^2/a^2)^{(1+k)/2}$, $q = \mu p$ (FORMULAS.md A4,
+    /// A5; see [`SurfaceLoad::cylinder`]).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] for non-finite $\mu$.

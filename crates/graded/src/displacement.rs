@@ -81,7 +81,10 @@ impl SurfaceDisplacement {
         Ok(Self { load, rules, mat: *material, grading: Grading::default() })
     }
 
-    /// The four integrals of FORMULAS.md A3 at $x$ (any $x$, inside or outside the load).
+    /// The four integrals of FORMULAS.md A3 at $x$ (any $x$, inside or outside the load),
+    /// $\int p(s)|x-s|^{-k}ds$, $\int p(s)\,\mathrm{sgn}(x-s)|x-s|^{-k}ds$ and the same for $q$
+    /// (see [`SurfaceIntegrals`]); per patch of centre $c$ and half-width $b$ they are taken in
+    /// $s = c + bt$, which gives the factor $b^{1-k}$.
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] for non-finite $x$.
@@ -112,7 +115,15 @@ impl SurfaceDisplacement {
         Ok(out)
     }
 
-    /// The displacement at $x$ split by cause. The two parts that stay finite as $k \to 0$
+    /// The displacement at $x$ split by cause, term by term of FORMULAS.md A3 (seed 000 eqs
+    /// 26–27), with $C = (1-\nu^2)/E_0$:
+    /// $$u_y^{(p)} = \frac{C\beta\sin(\beta\pi/2)}{2I_k\,k(1+k)}\int p\,|x-s|^{-k}ds,\qquad
+    ///   u_y^{(q)} = -\frac{C\beta}{1+k}\,\frac{\cos(\beta\pi/2)}{k}\,\frac{1}{2J_k}
+    ///   \int q\,\mathrm{sgn}(x-s)|x-s|^{-k}ds,$$
+    /// $$u_x^{(p)} = C\,\frac{\cos(\beta\pi/2)}{k}\,\frac{1}{2I_k}\int p\,\mathrm{sgn}(x-s)
+    ///   |x-s|^{-k}ds,\qquad
+    ///   u_x^{(q)} = \frac{C\sin(\beta\pi/2)}{2J_k\,k}\int q\,|x-s|^{-k}ds.$$
+    /// The two parts that stay finite as $k \to 0$
     /// ([`DisplacementParts::uy_from_q`], [`DisplacementParts::ux_from_p`]) use the stable
     /// form of $\cos(\beta\pi/2)/k$; the other two are infinite at $k = 0$ and are returned as
     /// $\pm\infty$ there.
@@ -136,7 +147,9 @@ impl SurfaceDisplacement {
         })
     }
 
-    /// $(u_x, u_y)$ at $x$, absolute (relative to the surface at infinity), for $k > 0$.
+    /// $(u_x, u_y)$ at $x$, absolute (relative to the surface at infinity), for $k > 0$: the
+    /// sums $u_x = u_x^{(p)} + u_x^{(q)}$, $u_y = u_y^{(p)} + u_y^{(q)}$ of
+    /// [`SurfaceDisplacement::parts`] (FORMULAS.md A3; seed 000 eqs 26–27).
     ///
     /// # Errors
     /// [`Error::NoAbsoluteIndentation`] at $k = 0$ (2D displacements are logarithmic: use

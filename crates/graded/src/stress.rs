@@ -122,7 +122,9 @@ impl StressField {
         &self.load
     }
 
-    /// $(\sigma_{xx}, \sigma_{yy}, \sigma_{xy})$ at $(x, y)$.
+    /// $(\sigma_{xx}, \sigma_{yy}, \sigma_{xy})$ at $(x, y)$: the integral of the type docs,
+    /// i.e. the line-load field of FORMULAS.md A2 superposed over the load (corrected seed 000
+    /// eqs 17–25; Giannakopoulos & Pallot 2000).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] unless $x$ is finite and $y \ge 10^{-12} b_{\max}$ is finite

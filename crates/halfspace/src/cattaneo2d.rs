@@ -70,7 +70,8 @@ impl Cattaneo2d {
         self.c
     }
 
-    /// Normal load per unit length $P = \pi a p_0/2$.
+    /// Normal load per unit length $P = \pi a p_0/2$, the resultant of the Hertz pressure
+    /// (FORMULAS.md C, $p_0 = 2P/(\pi a)$; Johnson eqs 4.45, 4.47).
     #[must_use]
     pub fn normal_load(&self) -> f64 {
         PI * self.a * self.p0 / 2.0
@@ -82,13 +83,15 @@ impl Cattaneo2d {
         self.q
     }
 
-    /// Pressure $p(x) = p_0\sqrt{1-x^2/a^2}$.
+    /// Pressure $p(x) = p_0\sqrt{1-x^2/a^2}$ for $|x| < a$, zero outside (Hertz; FORMULAS.md C).
     #[must_use]
     pub fn pressure(&self, x: f64) -> f64 {
         self.p0 * ellipse_factor(x, self.a)
     }
 
-    /// Shear traction $q(x)$ on the body (module formula). In the stick zone it is evaluated as
+    /// Shear traction $q(x)$ on the body, the module formula (Cattaneo 1938, Mindlin 1949;
+    /// Johnson eqs 7.28–7.31; FORMULAS.md C, 2D Cattaneo–Mindlin). In the stick zone it is
+    /// evaluated as
     /// $\mathrm{sgn}(Q)\,fp_0\,a\,(|Q|/fP)/\left(\sqrt{a^2-x^2} + \sqrt{c^2-x^2}\right)$,
     /// which avoids the cancellation of the two square roots when $Q$ is small.
     #[must_use]

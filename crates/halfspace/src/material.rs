@@ -63,7 +63,8 @@ impl Material {
         self.e.is_infinite()
     }
 
-    /// Normal (plane-strain) compliance of this body, $(1-\nu^2)/E$ (0 when rigid).
+    /// Normal (plane-strain) compliance of this body, $(1-\nu^2)/E$ (0 when rigid): one term
+    /// of $1/E^* = \sum_i(1-\nu_i^2)/E_i$ (Johnson eq. 4.22; FORMULAS.md E).
     #[must_use]
     pub fn normal_compliance(&self) -> f64 {
         if self.is_rigid() {
@@ -74,14 +75,15 @@ impl Material {
     }
 
     /// Plane-strain modulus $E/(1-\nu^2)$ of this body alone (the $E^*$ against a rigid
-    /// counterpart).
+    /// counterpart; Johnson eq. 4.22, FORMULAS.md E). $+\infty$ for a rigid body.
     #[must_use]
     pub fn plane_strain_modulus(&self) -> f64 {
         1.0 / self.normal_compliance()
     }
 
     /// The per-body constants $(1-\nu)/G$, $\nu/G$, $(1-2\nu)/G$ that multiply the
-    /// Boussinesq/Cerruti kernels (all zero when rigid).
+    /// Boussinesq/Cerruti kernels (all zero when rigid); see [`Compliance`] for the surface
+    /// displacements they enter (Johnson eqs 3.22, 3.86; FORMULAS.md F).
     #[must_use]
     pub fn compliance(&self) -> Compliance {
         if self.is_rigid() {

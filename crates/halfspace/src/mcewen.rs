@@ -176,19 +176,22 @@ impl HertzTraction {
         Self::new(a, p0, f * p0)
     }
 
-    /// Pressure $p(x) = p_0\sqrt{1-x^2/a^2}$ ($0$ outside).
+    /// Pressure $p(x) = p_0\sqrt{1-x^2/a^2}$ ($0$ outside) (Hertz; FORMULAS.md C).
     #[must_use]
     pub fn pressure(&self, x: f64) -> f64 {
         self.p0 * ellipse_factor(x, self.a)
     }
 
-    /// Shear traction $q(x) = q_0\sqrt{1-x^2/a^2}$ ($0$ outside), acting on the body in $+x$.
+    /// Shear traction $q(x) = q_0\sqrt{1-x^2/a^2}$ ($0$ outside), acting on the body in $+x$
+    /// (McEwen 1949; FORMULAS.md C, $q = fp$ for sliding).
     #[must_use]
     pub fn shear(&self, x: f64) -> f64 {
         self.q0 * ellipse_factor(x, self.a)
     }
 
-    /// Stress at $(x, y)$ ([`stress_potential`]).
+    /// Stress at $(x, y)$ from Muskhelishvili's potential
+    /// $\Phi(z) = \frac{p_0 + iq_0}{2ia}(\sqrt{z^2-a^2} - z)$ ([`stress_potential`], which
+    /// states the stress formulas; FORMULAS.md C).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] for non-finite input or $y < 0$.

@@ -76,7 +76,8 @@ pub fn checked_boussinesq_displacement(
 /// \sigma_{xz} = -\frac{3Pxz^2}{2\pi R^5},\ \sigma_{yz} = -\frac{3Pyz^2}{2\pi R^5}.$$
 /// This is Johnson eq. 3.21 (polar $\sigma_r, \sigma_\theta, \sigma_z, \tau_{rz}$) rewritten in
 /// Cartesian components in a form without cancellation on the axis $\rho = 0$. Only $\nu$ of the
-/// material enters. Not finite at the load point.
+/// material enters. Not finite at the load point. FORMULAS.md F gives only the surface
+/// displacements; the stresses are checked by the tests named in the module docs.
 #[inline]
 #[must_use]
 pub fn boussinesq_stress(nu: f64, p: f64, x: f64, y: f64, z: f64) -> Stress3 {
@@ -174,7 +175,8 @@ pub fn checked_cerruti_displacement(
 /// \frac{x^2y}{R^3(R+z)^2} + \frac{2x^2y}{R^2(R+z)^3}\right)\right],$$
 /// $$\sigma_{zz} = -\frac{3Qxz^2}{2\pi R^5},\quad \sigma_{xz} = -\frac{3Qx^2z}{2\pi R^5},\quad
 /// \sigma_{yz} = -\frac{3Qxyz}{2\pi R^5}.$$
-/// Only $\nu$ enters. Not finite at the load point.
+/// Only $\nu$ enters. Not finite at the load point. FORMULAS.md F gives only the surface
+/// displacements of this force; the stresses are checked by the tests named in the module docs.
 #[inline]
 #[must_use]
 pub fn cerruti_stress(nu: f64, q: f64, x: f64, y: f64, z: f64) -> Stress3 {

@@ -234,7 +234,10 @@ pub fn inv_r_integral(r: &Rect, x: f64, y: f64) -> f64 {
     s * l
 }
 
-/// All six kernel integrals of the module table at once (shares the square roots and logs).
+/// All six kernel integrals of the module table at once (shares the square roots and logs):
+/// each is the corner sum $\iint k\,d\xi\,d\eta = \sum_{i,j}(-1)^{i+j}F(X_i, Y_j)$ of the
+/// antiderivative $F$ in the table (Love 1929 and Johnson eq. 3.25 for $1/\rho$; FORMULAS.md F
+/// for the shear rows), or the far-field Gauss–Legendre rule beyond [`FAR_FIELD`].
 #[inline]
 #[must_use]
 pub fn kernel_integrals(r: &Rect, x: f64, y: f64) -> KernelIntegrals {
@@ -316,7 +319,10 @@ pub fn shear_x_displacement(c: &Compliance, r: &Rect, x: f64, y: f64) -> Displac
 }
 
 /// Tangential part only, $u_x$ due to a unit shear along $+x$: the fast path of
-/// [`shear_x_displacement`] used by uncoupled traction solvers.
+/// [`shear_x_displacement`] used by uncoupled traction solvers,
+/// $$u_x = \frac{1}{2\pi}\sum_{i,j}(-1)^{i+j}\left[c_1 X_i\,\mathrm{asinh}\frac{Y_j}{|X_i|} +
+/// (c_1 + c_2)\,Y_j\,\mathrm{asinh}\frac{X_i}{|Y_j|}\right]$$
+/// (Cerruti integrated over the rectangle; FORMULAS.md F, element-to-point formula).
 #[inline]
 #[must_use]
 pub fn shear_x_ux(c: &Compliance, r: &Rect, x: f64, y: f64) -> f64 {

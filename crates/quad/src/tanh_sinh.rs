@@ -32,6 +32,14 @@ fn end_gap() -> f64 {
 /// Tanh–sinh integration of $\int_a^b f(x)\,dx$ on a finite interval, with the honest error
 /// estimate of the [module docs](self). $a > b$ gives $-\int_b^a$; $a = b$ gives $0$.
 ///
+/// With $c = (a+b)/2$, $h = (b-a)/2$ and $x = \tanh(\tfrac\pi2\sinh\tau)$ the integral becomes
+/// $$\int_a^b f\,dx = h\int_{-\infty}^{\infty} f\big(c + h\tanh(\tfrac\pi2\sinh\tau)\big)\,
+///   \frac{\tfrac\pi2\cosh\tau}{\cosh^2(\tfrac\pi2\sinh\tau)}\,d\tau,$$
+/// whose integrand decays double-exponentially; it is cut to $|\tau| \le 3$ and summed by the
+/// trapezoidal rule with step halving (Takahasi & Mori, *Publ. RIMS* 9 (1974), the
+/// double-exponential formula; as implemented by the `quadrature` crate). Not a FORMULAS.md
+/// item: it is a general integrator.
+///
 /// Suited to analytic integrands and to mild end singularities (e.g. $\sqrt{1-x^2}$, $\ln x$);
 /// strong ones such as $x^{-1/2}$ are beyond the fixed $\tau$ range and come back as
 /// [`QuadError::NotConverged`] rather than as a wrong number.

@@ -145,12 +145,14 @@ impl GoryachevaParams {
         Ok(p)
     }
 
-    /// Compliance $K = 4(1-\nu^2)/(\pi E)$ \[1/Pa\].
+    /// Compliance $K = 4(1-\nu^2)/(\pi E)$ \[1/Pa\] of the two identical bodies (Goryacheva
+    /// 1973 eq 3; FORMULAS.md section D; see [`crate::carter::compliance`]).
     #[must_use]
     pub fn compliance(&self) -> f64 {
         compliance(self.youngs_modulus, self.poisson_ratio)
     }
-    /// Elastic (Hertz) contact length $l_H = \sqrt{8KRP}$ \[m\].
+    /// Elastic (Hertz) contact length $l_H = \sqrt{8KRP}$ \[m\], the root of eq 19 at
+    /// $\alpha = \beta$ (Goryacheva 1973, elastic limit; FORMULAS.md section D).
     #[must_use]
     pub fn hertz_length(&self) -> f64 {
         (8.0 * self.compliance() * self.radius * self.load).sqrt()

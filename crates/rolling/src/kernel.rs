@@ -1,4 +1,5 @@
-//! The one integral behind the stress formulas (12) and (13).
+//! The one integral behind the stress formulas (12) and (13) of Goryacheva 1973 (seed 001), in
+//! the corrected forms of FORMULAS.md section D.
 //!
 //! With $t = d + L\cos\theta$ on a zone $(d-L, d+L)$ one has
 //! $dt/\sqrt{(t-d+L)(d+L-t)} = d\theta$, so the endpoint square roots of eqs 12/13 disappear,

@@ -46,7 +46,8 @@ impl SweepMaterial {
         load: 1.0e4,
     };
 
-    /// $l_H = \sqrt{8KRP}$ \[m\].
+    /// Elastic contact length $l_H = \sqrt{8KRP}$ \[m\], $K = 4(1-\nu^2)/(\pi E)$ (Goryacheva
+    /// 1973, elastic limit of eqs 19–20; FORMULAS.md section D).
     #[must_use]
     pub fn hertz_length(&self) -> f64 {
         (8.0 * compliance(self.youngs_modulus, self.poisson_ratio) * self.radius * self.load).sqrt()

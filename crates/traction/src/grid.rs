@@ -256,7 +256,10 @@ impl ContactGrid {
 
     /// Hertz circle of radius `a` carrying `load`, on a square lattice with `n_across`
     /// elements across the diameter, centred at the origin (a lattice corner at the centre
-    /// when `n_across` is even). `n_across = 10` gives seed 002's 80 elements.
+    /// when `n_across` is even). `n_across = 10` gives seed 002's 80 elements. The element
+    /// pressures are the Hertz shape sampled at the centres and scaled to the load,
+    /// $p_k = s\sqrt{1 - r_k^2/a^2}$ with $s$ such that $h_xh_y\sum_k p_k = P$ (so
+    /// $s \approx p_0 = 3P/(2\pi a^2)$; Hertz, FORMULAS.md E; seed 002 §3.3.1).
     ///
     /// # Errors
     /// As [`ContactGrid::from_patches`]; `n_across` must be at least 2.
@@ -265,7 +268,9 @@ impl ContactGrid {
     }
 
     /// Hertz ellipse (semi-axes `a` along $x$, `b` along $y$) carrying `load`, with
-    /// `nx` × `ny` lattice cells over its bounding box, centred at the origin.
+    /// `nx` × `ny` lattice cells over its bounding box, centred at the origin. Element
+    /// pressures $p_k = s\sqrt{1 - x_k^2/a^2 - y_k^2/b^2}$ with $h_xh_y\sum_k p_k = P$ (so
+    /// $s \approx p_0 = 3P/(2\pi ab)$; see [`PatchPressure::Hertz`]).
     ///
     /// # Errors
     /// As [`ContactGrid::from_patches`]; `nx`, `ny` must be at least 2.

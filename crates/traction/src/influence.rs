@@ -64,7 +64,9 @@ pub fn tensor(
 }
 
 /// Dense $N\times N$ matrix $A_{kj} = t_k\cdot U_{kj}\cdot t_j$ (row-major), with `dirs[k]`
-/// the unit direction $(t_x, t_y)$ of element $k$.
+/// the unit direction $(t_x, t_y)$ of element $k$ and $U_{kj}$ from [`tensor`] (FORMULAS.md F,
+/// tensor form projected on the traction directions; seed 002 §3.3.2, there with all
+/// $t_k = \hat x$).
 ///
 /// On a uniform lattice $U_{kj}$ depends only on the lattice offset, so each distinct
 /// offset is evaluated once (a map keyed by the integer offset).
@@ -91,7 +93,8 @@ pub fn projected_matrix(
 }
 
 /// The full $2N\times2N$ tensor matrix (row-major; unknown order
-/// $(\tau_{0x}, \tau_{0y}, \tau_{1x}, \dots)$), used by the twist preprocessor.
+/// $(\tau_{0x}, \tau_{0y}, \tau_{1x}, \dots)$), used by the twist preprocessor: block $(k, j)$
+/// is the symmetric $2\times2$ tensor $U_{kj}$ of [`tensor`] (FORMULAS.md F, tensor form).
 #[must_use]
 pub fn tensor_matrix(grid: &ContactGrid, c: &Compliance, model: InfluenceModel) -> Vec<f64> {
     let n = grid.len();

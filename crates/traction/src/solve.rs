@@ -1,5 +1,6 @@
 //! Partial-slip traction on a contact grid: a tangential force in any in-plane direction, or a
-//! twisting moment, solved by the modified LP of seed 002 (§3.3, Fig. 3.5; twist §3.4).
+//! twisting moment, solved by the modified LP of seed 002 (§3.3, Fig. 3.5; twist §3.4), with
+//! the influence coefficients of FORMULAS.md F.
 
 use crate::error::{non_negative, positive, Error, Result};
 use crate::grid::ContactGrid;
@@ -244,7 +245,8 @@ impl<'a> TractionProblem<'a> {
         self
     }
 
-    /// The relative compliance constants of the pair.
+    /// The relative compliance constants of the pair, $c_1 = \sum_i(1-\nu_i)/G_i$,
+    /// $c_2 = \sum_i\nu_i/G_i$ ([`Compliance::pair`]; FORMULAS.md F, $A = A^{(1)} + A^{(2)}$).
     #[must_use]
     pub fn compliance(&self) -> Compliance {
         Compliance::pair(&self.bodies[0], &self.bodies[1])
@@ -285,7 +287,13 @@ impl<'a> TractionProblem<'a> {
         }
     }
 
-    /// Solve.
+    /// Solve seed 002 eq. (3.13) on the grid with [`modified_lp`]: the influence matrix is
+    /// $A = c_1B_1 + c_2B_2$, the pair's projected matrix ([`projected_matrix`]; FORMULAS.md
+    /// F), the capacities are $c_k = fP_k$, the mode is $g_k = 1$ for a force or the lever arm
+    /// $g_k = \hat z\cdot\big((\mathbf x_k - \mathbf c)\times\mathbf t_k\big)$ for a moment
+    /// (seed 002 §3.4), and $L = |T|$ or $|M|$. When $L \ge \sum_k c_k\max(g_k, 0)$ every
+    /// element slips at its capacity (gross slip) and the LP is skipped; $L = 0$ gives zero
+    /// traction.
     ///
     /// # Errors
     /// [`Error::Infeasible`] / [`Error::IterationLimit`] from the LP;

@@ -1,4 +1,6 @@
-//! Hertz contact with an elliptic contact area (general point contact).
+//! Hertz contact with an elliptic contact area (general point contact): Hertz (1882);
+//! Johnson, *Contact Mechanics*, eqs 3.39–3.41 and 4.40. FORMULAS.md covers only the circular
+//! case (section E), which is the limit $R'_x = R'_y$ of this one.
 
 use crate::error::{positive, Error};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -153,7 +155,8 @@ impl HertzEllipse {
         self.iterations
     }
 
-    /// Pressure $p_0\sqrt{1 - x^2/a_x^2 - y^2/a_y^2}$, zero outside the ellipse.
+    /// Pressure $p_0\sqrt{1 - x^2/a_x^2 - y^2/a_y^2}$, zero outside the ellipse, with
+    /// $p_0 = 3P/(2\pi a_xa_y)$ (Johnson eqs 3.39–3.41, 4.40; circular limit FORMULAS.md E).
     #[must_use]
     pub fn pressure(&self, x: f64, y: f64) -> f64 {
         let s = 1.0 - (x / self.ax).powi(2) - (y / self.ay).powi(2);

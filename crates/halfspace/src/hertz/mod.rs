@@ -42,7 +42,8 @@ impl HertzLine {
         Ok(Self { load, radius, e_star, a, p0: 2.0 * load / (PI * a) })
     }
 
-    /// The contact that has half-width $a$: $P = \pi a^2E^*/(4R)$.
+    /// The contact that has half-width $a$: $P = \pi a^2E^*/(4R)$, the inverse of
+    /// $a^2 = 4PR/(\pi E^*)$ (Johnson eqs 4.45, 4.47; FORMULAS.md B).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] if an input is not finite and positive.
@@ -83,7 +84,8 @@ impl HertzLine {
         self.p0
     }
 
-    /// Pressure $p(x) = p_0\sqrt{1-x^2/a^2}$, zero outside $|x| < a$.
+    /// Pressure $p(x) = p_0\sqrt{1-x^2/a^2}$, zero outside $|x| < a$ (Johnson eqs 4.45, 4.47;
+    /// FORMULAS.md B, $p \to p_0\sqrt{1-x^2/a^2}$).
     #[must_use]
     pub fn pressure(&self, x: f64) -> f64 {
         self.p0 * ellipse_factor(x, self.a)
@@ -171,13 +173,15 @@ impl HertzSphere {
         self.p0
     }
 
-    /// Approach $\delta = a^2/R$.
+    /// Approach of distant points of the two bodies, $\delta = a^2/R$ (Johnson eqs 4.22–4.24;
+    /// FORMULAS.md E).
     #[must_use]
     pub fn approach(&self) -> f64 {
         self.a * self.a / self.radius
     }
 
-    /// Pressure $p(r) = p_0\sqrt{1-r^2/a^2}$, zero outside.
+    /// Pressure $p(r) = p_0\sqrt{1-r^2/a^2}$, zero outside $r < a$, with
+    /// $p_0 = 3P/(2\pi a^2)$ (Johnson eqs 4.22–4.24; FORMULAS.md E).
     #[must_use]
     pub fn pressure(&self, r: f64) -> f64 {
         self.p0 * ellipse_factor(r, self.a)

@@ -1,4 +1,5 @@
-//! Cattaneo's elliptical contact under a tangential force along an axis.
+//! Cattaneo's elliptical contact under a tangential force along an axis (Cattaneo 1938; seed
+//! 002 §3.2.2; FORMULAS.md E).
 
 use super::{load_ratio, one_minus_pow};
 use crate::error::{positive, Result};
@@ -56,13 +57,13 @@ impl Cattaneo {
         Ok(Self { a, b, normal, friction, ratio })
     }
 
-    /// Stick-zone scale $a^*/a = b^*/b = (1 - T/fP)^{1/3}$.
+    /// Stick-zone scale $a^*/a = b^*/b = (1 - T/fP)^{1/3}$ (Cattaneo 1938; FORMULAS.md E).
     #[must_use]
     pub fn stick_scale(&self) -> f64 {
         (1.0 - self.ratio).max(0.0).cbrt()
     }
 
-    /// Peak Hertz pressure $p_0 = 3P/(2\pi ab)$.
+    /// Peak Hertz pressure $p_0 = 3P/(2\pi ab)$ (Hertz; FORMULAS.md E, Cattaneo).
     #[must_use]
     pub fn peak_pressure(&self) -> f64 {
         3.0 * self.normal / (2.0 * PI * self.a * self.b)
@@ -117,7 +118,9 @@ impl Cattaneo {
             * one_minus_pow(self.ratio, 2.0 / 3.0)
     }
 
-    /// Relative displacement of the two bodies: the sum of the per-body compliances.
+    /// Relative displacement of the two bodies: the sum of the per-body compliances,
+    /// $\delta = \frac{3fP}{4\pi a_{\max}}\sum_i\frac{\Lambda(\nu_i)}{G_i}\Big[1-(1-T/fP)^{2/3}\Big]$
+    /// (FORMULAS.md E; seed 002 §3.2.2).
     #[must_use]
     pub fn compliance_relative(&self, body1: &Material, body2: &Material) -> f64 {
         self.compliance_per_body(body1) + self.compliance_per_body(body2)

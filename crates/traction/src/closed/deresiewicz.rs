@@ -1,4 +1,5 @@
-//! Mindlin–Deresiewicz: oscillating tangential force on a Hertz circle.
+//! Mindlin–Deresiewicz: oscillating tangential force on a Hertz circle (Mindlin & Deresiewicz
+//! 1953; seed 002 §3.2.1 and eq. 3.5; FORMULAS.md E, which corrects the sign in eq. 3.5).
 
 use super::{load_ratio, one_minus_pow};
 use crate::error::{positive, Error, Result};
@@ -41,7 +42,8 @@ impl Deresiewicz {
     }
 
     /// Radius $b = a\,(1 - (T^*-T)/(2fP))^{1/3}$ bounding the reversed-slip annulus
-    /// $b \le \rho \le a$ while unloading from $T^*$ to $T$ (the seed's $h^*$).
+    /// $b \le \rho \le a$ while unloading from $T^*$ to $T$ (the seed's $h^*$; Mindlin &
+    /// Deresiewicz 1953; FORMULAS.md E).
     ///
     /// # Errors
     /// [`crate::Error::OutOfDomain`] if $|T| > T^*$.
@@ -50,7 +52,7 @@ impl Deresiewicz {
         Ok(self.a * (1.0 - (self.amplitude - t) / (2.0 * self.fp())).max(0.0).cbrt())
     }
 
-    /// Traction while unloading from $T^*$ to $T$ (FORMULAS.md E):
+    /// Traction while unloading from $T^*$ to $T$ (Mindlin & Deresiewicz 1953; FORMULAS.md E):
     /// $q = q^*(\rho) - 2q_M(\rho; b)$ with $q_M(\rho;b) = q_h[\sqrt{a^2-\rho^2} -
     /// \sqrt{b^2-\rho^2}H(b-\rho)]$, $q_h = 3fP/(2\pi a^3)$, $q^*$ the Mindlin traction at $T^*$.
     ///
@@ -71,7 +73,8 @@ impl Deresiewicz {
     }
 
     /// Traction while reloading from $-T^*$ to $T$: by symmetry
-    /// $q_{\uparrow}(\rho; T) = -q_{\downarrow}(\rho; -T)$.
+    /// $q_{\uparrow}(\rho; T) = -q_{\downarrow}(\rho; -T)$, with $q_{\downarrow}$ of
+    /// [`Deresiewicz::unloading_traction`] (Mindlin & Deresiewicz 1953; FORMULAS.md E).
     ///
     /// # Errors
     /// [`crate::Error::OutOfDomain`] if $|T| > T^*$.
@@ -88,7 +91,8 @@ impl Deresiewicz {
         }
     }
 
-    /// Per-body displacement while unloading from $T^*$ (FORMULAS.md E):
+    /// Per-body displacement while unloading from $T^*$ (Mindlin & Deresiewicz 1953;
+    /// FORMULAS.md E), $K_t = 3(2-\nu)/(16Ga)$:
     /// $$\delta_d(T) = K_t fP\Big[2\Big(1-\frac{T^*-T}{2fP}\Big)^{2/3} -
     ///   \Big(1-\frac{T^*}{fP}\Big)^{2/3} - 1\Big].$$
     ///
@@ -103,7 +107,9 @@ impl Deresiewicz {
         Ok(self.kt(body) * fp * bracket)
     }
 
-    /// Per-body displacement while reloading from $-T^*$: $\delta_i(T) = -\delta_d(-T)$.
+    /// Per-body displacement while reloading from $-T^*$ (FORMULAS.md E):
+    /// $$\delta_i(T) = -\delta_d(-T) = -K_t fP\Big[2\Big(1-\frac{T^*+T}{2fP}\Big)^{2/3} -
+    ///   \Big(1-\frac{T^*}{fP}\Big)^{2/3} - 1\Big],\qquad K_t = \frac{3(2-\nu)}{16Ga}.$$
     ///
     /// # Errors
     /// [`crate::Error::OutOfDomain`] if $|T| > T^*$.
@@ -112,7 +118,9 @@ impl Deresiewicz {
     }
 
     /// The hysteresis loop as `2 n + 1` points $(T, \delta)$: unloading from $T^*$ to $-T^*$
-    /// ($n$ steps), then reloading back to $T^*$ ($n$ steps). Per body.
+    /// ($n$ steps), then reloading back to $T^*$ ($n$ steps), on equally spaced $T$. Per body;
+    /// the branches are [`Deresiewicz::delta_unloading`] and [`Deresiewicz::delta_reloading`]
+    /// (Mindlin & Deresiewicz 1953; FORMULAS.md E).
     ///
     /// # Errors
     /// [`crate::Error::OutOfDomain`] if `n` is zero.

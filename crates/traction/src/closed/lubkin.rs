@@ -1,4 +1,5 @@
-//! Lubkin's torsion of a Hertz circle with a slip annulus.
+//! Lubkin's torsion of a Hertz circle with a slip annulus (Lubkin 1951; FORMULAS.md G, whose
+//! G-independent forms are used here).
 
 use crate::error::{positive, Error, Result};
 use std::f64::consts::PI;
@@ -69,7 +70,7 @@ impl Lubkin {
 
     /// Parameters given the moment $0 \le M \le M_{\max} = 3\pi\mu P a/16$: the stick radius
     /// solves $M(c) = M$ ($M$ decreases monotonically in $c$) by bisection to a relative
-    /// $10^{-15}$ of $a$.
+    /// $10^{-15}$ of $a$, with $M(c)$ of [`Lubkin::moment`] (Lubkin 1951; FORMULAS.md G).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] for bad inputs or $M > M_{\max}$ (gross slip: no stick disc).
@@ -141,7 +142,8 @@ impl Lubkin {
             * k_minus_e(u0 * u0)
     }
 
-    /// Relative rotation of the two bodies ($1/G \to 1/G_1 + 1/G_2$).
+    /// Relative rotation of the two bodies (FORMULAS.md G, $1/G \to 1/G_1 + 1/G_2$):
+    /// $$\omega = \frac{3\mu P}{4\pi a^2}\Big(\frac1{G_1} + \frac1{G_2}\Big)[K(k_c) - E(k_c)].$$
     #[must_use]
     pub fn rotation_relative(&self, body1: &Material, body2: &Material) -> f64 {
         self.rotation_per_body(body1) + self.rotation_per_body(body2)

@@ -1,4 +1,5 @@
-//! Mindlin's circular contact under a tangential force.
+//! Mindlin's circular contact under a tangential force (Mindlin 1949; seed 002 eqs 3.1–3.4;
+//! FORMULAS.md E).
 
 use super::{load_ratio, one_minus_pow};
 use crate::error::{positive, Result};

@@ -333,7 +333,11 @@ impl TensorConvolution {
     }
 
     /// $\mathbf u = K * \mathbf q$: in-plane displacement at every element centre due to the
-    /// element tractions `(qx, qy)` (element order of the grid; lengths $N$).
+    /// element tractions `(qx, qy)` (element order of the grid; lengths $N$),
+    /// $$u_a(k) = \sum_j K_{ab}(\mathbf i_k - \mathbf i_j)\,q_b(j),$$
+    /// with $K$ the uniform-rectangle tensor of FORMULAS.md F, computed as the zero-padded
+    /// (aperiodic) FFT convolution on circular arrays of size $M \ge 2n-1$ per axis (Liu, Wang &
+    /// Liu 2000, *Wear* 243, DC-FFT).
     ///
     /// # Panics
     /// If a slice length differs from $N$.

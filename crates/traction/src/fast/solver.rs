@@ -348,14 +348,15 @@ impl<'a> FastProblem<'a> {
         self
     }
 
-    /// The relative compliance constants of the pair.
+    /// The relative compliance constants of the pair, $c_1 = \sum_i(1-\nu_i)/G_i$,
+    /// $c_2 = \sum_i\nu_i/G_i$ ([`Compliance::pair`]; FORMULAS.md F, $A = A^{(1)} + A^{(2)}$).
     #[must_use]
     pub fn compliance(&self) -> Compliance {
         Compliance::pair(&self.bodies[0], &self.bodies[1])
     }
 
-    /// Plan the convolution operator of this problem (reusable across loads with
-    /// [`FastProblem::solve_with`]).
+    /// Plan the convolution operator $\mathbf u = K * \mathbf q$ of this problem (FORMULAS.md F;
+    /// reusable across loads with [`FastProblem::solve_with`]).
     ///
     /// # Errors
     /// As [`TensorConvolution::new`].
@@ -363,7 +364,8 @@ impl<'a> FastProblem<'a> {
         TensorConvolution::new(self.grid, &self.compliance(), self.model)
     }
 
-    /// Plan the operator and solve.
+    /// Plan the operator and solve the discrete problem of the [`crate::fast`] module docs
+    /// (see [`FastProblem::solve_with`]).
     ///
     /// # Errors
     /// As [`FastProblem::solve_with`] and [`TensorConvolution::new`].
@@ -379,6 +381,14 @@ impl<'a> FastProblem<'a> {
 
     /// Solve with an operator planned by [`FastProblem::operator`] for the same grid, bodies
     /// and model (the caller's responsibility; only the element count is checked).
+    ///
+    /// Solves the conditions of the [`crate::fast`] module docs,
+    /// $|\mathbf q_k| \le fp_k$, $\mathbf s_k = \lambda_k\mathbf q_k$ with $\lambda_k \ge 0$ and
+    /// $\lambda_k(fp_k - |\mathbf q_k|) = 0$, $h_xh_y\sum_k\mathbf q_k = \mathbf T$ (and the moment
+    /// if one is prescribed), by semismooth Newton on the natural residual
+    /// $\mathbf r_k = \mathbf q_k - \Pi_{D_k}(\mathbf q_k + \rho\,\mathbf s_k)$ (Hüeber, Stadler &
+    /// Wohlmuth 2008) with projected conjugate gradients (Gould, Hribar & Nocedal 2001); the
+    /// influence operator is that of FORMULAS.md F.
     ///
     /// # Errors
     /// * [`Error::LengthMismatch`] if the operator belongs to a grid of another size;

@@ -102,7 +102,11 @@ impl LpSolution {
     }
 }
 
-/// Solve seed 002 eq. (3.13) by the modified simplex of Fig. 3.5.
+/// Solve seed 002 eq. (3.13) by the modified simplex of Fig. 3.5: find $F, Y_1, Y_2 \ge 0$ and
+/// $\beta \ge 0$ with
+/// $$AF + Y_1 - \beta g = 0,\qquad F + Y_2 = c,\qquad g^{\mathsf T}F = L,\qquad
+///   Y_{1k}Y_{2k} = 0$$
+/// (see the [module docs](self) for the entry rule and tolerances).
 ///
 /// * `a`: the $N \times N$ influence matrix, row-major (`a[k * n + j]`), any consistent units;
 /// * `g`: the rigid-body mode (length $N$; all ones for a translation);
@@ -132,7 +136,8 @@ pub fn modified_lp(
 /// stored and updated. It is kept as the naive reference of [`modified_lp`], which must
 /// reproduce its pivot sequence and answer; it costs about three times as much per pivot.
 ///
-/// Arguments, result and errors as [`modified_lp`].
+/// Same problem (seed 002 eq. (3.13), Fig. 3.5); arguments, result and errors as
+/// [`modified_lp`].
 ///
 /// # Errors
 /// As [`modified_lp`].
