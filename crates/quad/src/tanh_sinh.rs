@@ -8,7 +8,7 @@
 //! * it replaces a non-finite integrand value by $0$. Here every value passes through a check
 //!   and the first non-finite one is returned as [`QuadError::NonFinite`];
 //! * its error estimate ignores the truncation of the $\tau$ range at $\pm3$ (the outermost
-//!   nodes lie $\delta \approx 4.3\times10^{-14}\,h$ from the ends) and can be optimistic.
+//!   nodes lie $\delta \approx 4.3\times10^{-14}\,h$ from the ends, $h = (b-a)/2$) and can be optimistic.
 //!   Here the estimate is
 //!   $$E = \max\big(E_{\text{crate}},\ |Q_A - Q_B|\big) + T + 10\,\varepsilon|Q|,$$
 //!   where $Q_A$ is the run at the requested tolerance and $Q_B$ a second run at a
@@ -86,7 +86,9 @@ pub fn tanh_sinh<F: FnMut(f64) -> f64>(
     if let Some(e) = fail() {
         return Err(e);
     }
-    let delta = end_gap() * (hi - lo);
+    // The outermost node sits end_gap() from +-1 in the reference variable, i.e. end_gap() * h
+    // from each end with h = (hi - lo)/2 the half-length.
+    let delta = end_gap() * 0.5 * (hi - lo);
     let mut tail = 0.0;
     for (e1, e2) in [(lo + delta, lo + 2.0 * delta), (hi - delta, hi - 2.0 * delta)] {
         let (f1, f2) = (g(e1).abs(), g(e2).abs());
