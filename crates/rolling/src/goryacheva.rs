@@ -51,7 +51,7 @@
 //!   (\alpha-\beta)\,2r/x_1},$$
 //! ($r, k$ at $x_1, x_2$; $I_2/I_0 = 1 - 2r/x_1$), and $M^* = M_1 + QR$.
 
-use crate::carter::{carter, check_material, compliance, CarterParams, CarterSolution};
+use crate::carter::{carter, CarterParams, CarterSolution};
 use crate::error::{finite, normal, positive, Error};
 use crate::kernel::{angle, ExpKernel};
 use crate::ratios::{i2_over_i0, i_ratio, k_ratio, one_minus_i_ratio, two_i_ratio_over_x};
@@ -77,12 +77,8 @@ pub enum Response {
 /// Validated inputs of Goryacheva's problem (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GoryachevaParams {
-    youngs_modulus: f64,
-    poisson_ratio: f64,
-    radius: f64,
-    load: f64,
-    friction: f64,
-    creep: f64,
+    /// The elastic part (material, radius, load, friction, creep), validated as Carter's.
+    elastic: CarterParams,
     alpha: f64,
     beta: f64,
     speed: f64,
@@ -113,13 +109,8 @@ impl GoryachevaParams {
         beta: f64,
         speed: f64,
     ) -> Result<Self, Error> {
-        check_material(youngs_modulus, poisson_ratio)?;
-        positive("radius", radius)?;
-        positive("load", load)?;
-        positive("friction", friction)?;
-        if !creep.is_finite() {
-            return Err(Error::OutOfDomain { name: "creep", value: creep, allowed: "finite" });
-        }
+        let elastic =
+            CarterParams::new(youngs_modulus, poisson_ratio, radius, load, friction, creep)?;
         positive("beta", beta)?;
         positive("alpha", alpha)?;
         if alpha < beta {
@@ -130,17 +121,7 @@ impl GoryachevaParams {
             });
         }
         positive("speed", speed)?;
-        let p = GoryachevaParams {
-            youngs_modulus,
-            poisson_ratio,
-            radius,
-            load,
-            friction,
-            creep,
-            alpha,
-            beta,
-            speed,
-        };
+        let p = GoryachevaParams { elastic, alpha, beta, speed };
         Scales::of(&p)?;
         Ok(p)
     }
@@ -149,33 +130,39 @@ impl GoryachevaParams {
     /// 1973 eq 3; FORMULAS.md section D; see [`crate::carter::compliance`]).
     #[must_use]
     pub fn compliance(&self) -> f64 {
-        compliance(self.youngs_modulus, self.poisson_ratio)
+        self.elastic.compliance()
     }
     /// Elastic (Hertz) contact length $l_H = \sqrt{8KRP}$ \[m\], the root of eq 19 at
     /// $\alpha = \beta$ (Goryacheva 1973, elastic limit; FORMULAS.md section D).
     #[must_use]
     pub fn hertz_length(&self) -> f64 {
-        (8.0 * self.compliance() * self.radius * self.load).sqrt()
+        (8.0 * self.compliance() * self.radius() * self.load()).sqrt()
+    }
+    /// The elastic part of the problem as Carter's parameters (same material, radius, load,
+    /// friction and creep): what the contact would be at $\alpha = \beta$.
+    #[must_use]
+    pub fn elastic(&self) -> &CarterParams {
+        &self.elastic
     }
     /// Radius $R$ \[m\].
     #[must_use]
     pub fn radius(&self) -> f64 {
-        self.radius
+        self.elastic.radius()
     }
     /// Load $P$ \[N/m\].
     #[must_use]
     pub fn load(&self) -> f64 {
-        self.load
+        self.elastic.load()
     }
     /// Friction $\rho$.
     #[must_use]
     pub fn friction(&self) -> f64 {
-        self.friction
+        self.elastic.friction()
     }
     /// Creep $\delta$.
     #[must_use]
     pub fn creep(&self) -> f64 {
-        self.creep
+        self.elastic.creep()
     }
     /// $\alpha$ \[s\].
     #[must_use]
@@ -203,7 +190,7 @@ struct Scales {
 
 impl Scales {
     fn of(p: &GoryachevaParams) -> Result<Self, Error> {
-        let kr = normal("K R", p.compliance() * p.radius)?;
+        let kr = normal("K R", p.compliance() * p.radius())?;
         let lh = normal("Hertz length l_H", p.hertz_length())?;
         normal("l_H/(2 beta w)", lh / (2.0 * p.beta * p.speed))?;
         finite("(alpha - beta) w / l_H", (p.alpha - p.beta) * p.speed / lh)?;
@@ -368,15 +355,13 @@ enum Stress {
 pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
     let sc = Scales::of(p)?;
     let (alpha, beta, w) = (p.alpha, p.beta, p.speed);
-    let rho = p.friction;
-    let rho_s = if p.creep < 0.0 { -rho } else { rho };
+    let rho = p.friction();
+    let rho_s = if p.creep() < 0.0 { -rho } else { rho };
     let kr = sc.kr;
     let lh = sc.lh;
 
     if alpha == beta {
-        let cp =
-            CarterParams::new(p.youngs_modulus, p.poisson_ratio, p.radius, p.load, rho, p.creep)?;
-        let cs = carter(&cp);
+        let cs = carter(&p.elastic);
         let a = cs.half_width;
         let m = cs.stick_length;
         return Ok(GoryachevaSolution {
@@ -426,7 +411,7 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
     } else {
         (alpha - beta) * num / ((1.0 + rk) + ((alpha - beta) / beta) * rho1)
     };
-    let m1 = finite("M1", p.load * (d * u + w * lam2a_minus_b))?;
+    let m1 = finite("M1", p.load() * (d * u + w * lam2a_minus_b))?;
 
     // Stick length (eq 24).
     let phi = |z: f64| {
@@ -434,9 +419,9 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
         let kk = k_ratio(z / (2.0 * alpha * w));
         s * kk / (1.0 + s * kk)
     };
-    let slip = 2.0 * p.creep.abs() * p.radius / rho;
+    let slip = 2.0 * p.creep().abs() * p.radius() / rho;
     let t = (l + 2.0 * d) - slip;
-    let (regime, m, stick_iterations, stick_residual) = if p.creep == 0.0 {
+    let (regime, m, stick_iterations, stick_residual) = if p.creep() == 0.0 {
         (Regime::FullStick, l, 0, 0.0)
     } else if t <= 0.0 {
         (Regime::FullSlip, 0.0, 0, t)
@@ -461,17 +446,17 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
     let mu = m / lh;
     let tangential_force = match regime {
         Regime::FullStick => 0.0,
-        _ => -rho_s * p.load * ((1.0 - mu) * (1.0 + mu) - 4.0 * mu * q * s / den2),
+        _ => -rho_s * p.load() * ((1.0 - mu) * (1.0 + mu) - 4.0 * mu * q * s / den2),
     };
     let tangential_force = finite("Q", tangential_force)?;
-    let rolling_moment = finite("M*", m1 + tangential_force * p.radius)?;
+    let rolling_moment = finite("M*", m1 + tangential_force * p.radius())?;
 
     // Stress kernels (eqs 12, 13), see crate::kernel.
     let half = 0.5 * l;
     let lw = l * w / (2.0 * kr);
     let sigma = ExpKernel {
         kappa: cl.x1,
-        c0: p.load * u,
+        c0: p.load() * u,
         c1: half * w * (alpha + beta * rk) / ((1.0 + rk) * kr),
         fa: -lw * (alpha * one_minus_i_ratio(cl.x1) + beta * r * (1.0 + k)) / (1.0 + rk),
         fb: lw * ((alpha - beta) * r + alpha + beta * rk) / (1.0 + rk),
