@@ -459,22 +459,35 @@ impl GaussJacobi {
     }
 }
 
-impl Rule for GaussJacobi {
-    fn nodes(&self) -> &[f64] {
-        &self.pair.nodes
-    }
-    fn weights(&self) -> &[f64] {
-        &self.pair.weights
-    }
-    fn integrate<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<Estimate, QuadError> {
-        let (c, h, s) = self.scale(a, b)?;
-        self.pair.estimate(&mut checked(f), c, h, s)
-    }
-    fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, QuadError> {
-        let (c, h, s) = self.scale(a, b)?;
-        Ok(s * apply(&self.pair.nodes, &self.pair.weights, &mut checked(f), c, h)?.0)
-    }
+/// The [`Rule`] impl shared by the weighted rules (Jacobi, Chebyshev): map $[a,b]$ to
+/// $[-1,1]$ and multiply by the weight's scale factor from the rule's own `scale(a, b)`.
+macro_rules! weighted_rule {
+    ($t:ty) => {
+        impl Rule for $t {
+            fn nodes(&self) -> &[f64] {
+                &self.pair.nodes
+            }
+            fn weights(&self) -> &[f64] {
+                &self.pair.weights
+            }
+            fn integrate<F: FnMut(f64) -> f64>(
+                &self,
+                f: F,
+                a: f64,
+                b: f64,
+            ) -> Result<Estimate, QuadError> {
+                let (c, h, s) = self.scale(a, b)?;
+                self.pair.estimate(&mut checked(f), c, h, s)
+            }
+            fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, QuadError> {
+                let (c, h, s) = self.scale(a, b)?;
+                Ok(s * apply(&self.pair.nodes, &self.pair.weights, &mut checked(f), c, h)?.0)
+            }
+        }
+    };
 }
+
+weighted_rule!(GaussJacobi);
 
 // ---------------------------------------------------------------------------------------------
 // Gauss–Chebyshev
@@ -567,22 +580,7 @@ impl GaussChebyshev {
     }
 }
 
-impl Rule for GaussChebyshev {
-    fn nodes(&self) -> &[f64] {
-        &self.pair.nodes
-    }
-    fn weights(&self) -> &[f64] {
-        &self.pair.weights
-    }
-    fn integrate<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<Estimate, QuadError> {
-        let (c, h, s) = self.scale(a, b)?;
-        self.pair.estimate(&mut checked(f), c, h, s)
-    }
-    fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, QuadError> {
-        let (c, h, s) = self.scale(a, b)?;
-        Ok(s * apply(&self.pair.nodes, &self.pair.weights, &mut checked(f), c, h)?.0)
-    }
-}
+weighted_rule!(GaussChebyshev);
 
 /// Crate-internal access for the singular integrators: apply a Jacobi rule to a fallible
 /// integrand (returns value and $\sum|w f|$ scaled).
