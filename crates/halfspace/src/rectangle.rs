@@ -30,9 +30,9 @@
 //! The functions are plain, allocation-free and `#[inline]`. Accuracy: the corner sum loses
 //! about $\epsilon\,(d/h)^2$ relative accuracy at distance $d$ from an element of size $h$
 //! (cancellation of the four corner terms). Beyond [`FAR_FIELD`] element sizes the integrals
-//! are therefore taken by a $6\times6$ Gauss–Legendre rule of the point kernels instead, which
-//! are smooth there: the rule's error is below $(4\,d/h)^{-12}\approx10^{-16}$ relative at the
-//! switch, and the corner sum's own cancellation there is about $36\,\epsilon\approx8\times
+//! are therefore taken by a Gauss–Legendre product rule of the point kernels instead, which
+//! are smooth there ($6\times6$ points up to 40 sizes, $4\times4$ to 200, $3\times3$ beyond;
+//! the rule's error behaves like $(4d/h)^{-2n}$, below $10^{-16}$ relative everywhere), and the corner sum's own cancellation there is about $36\,\epsilon\approx8\times
 //! 10^{-15}$. The far-field rule is evaluated in coordinates scaled by the distance, so field
 //! points far beyond $10^{154}$ do not overflow.
 
@@ -152,29 +152,50 @@ fn corners(r: &Rect, x: f64, y: f64) -> ([(f64, f64, f64); 4], f64) {
 /// kernel integrals use the Gauss–Legendre far-field rule instead of the corner sums.
 pub const FAR_FIELD: f64 = 6.0;
 
-/// Nodes and weights of the 6-point Gauss–Legendre rule on $[-1, 1]$, from `stickslip-quad`
-/// (built once).
-fn gauss6() -> &'static ([f64; 6], [f64; 6]) {
-    static RULE: std::sync::OnceLock<([f64; 6], [f64; 6])> = std::sync::OnceLock::new();
-    RULE.get_or_init(|| {
+/// Nodes and weights of the `n`-point Gauss–Legendre rule on $[-1, 1]$ for the far-field
+/// orders used here ($n = 3, 4, 6$), from `stickslip-quad`, each built once.
+fn gauss(n: usize) -> (&'static [f64], &'static [f64]) {
+    use std::sync::OnceLock;
+    type Pair = (Vec<f64>, Vec<f64>);
+    static R3: OnceLock<Pair> = OnceLock::new();
+    static R4: OnceLock<Pair> = OnceLock::new();
+    static R6: OnceLock<Pair> = OnceLock::new();
+    let cell = match n {
+        3 => &R3,
+        4 => &R4,
+        _ => &R6,
+    };
+    let (t, w) = cell.get_or_init(|| {
         use stickslip_quad::Rule;
-        let rule = stickslip_quad::GaussLegendre::new(6).expect("a 6-point rule exists");
-        let mut t = [0.0; 6];
-        let mut w = [0.0; 6];
-        t.copy_from_slice(rule.nodes());
-        w.copy_from_slice(rule.weights());
-        (t, w)
-    })
+        let rule = stickslip_quad::GaussLegendre::new(n).expect("small Gauss rules exist");
+        (rule.nodes().to_vec(), rule.weights().to_vec())
+    });
+    (t, w)
 }
 
-/// The six kernel integrals by the $6\times6$ Gauss–Legendre rule when the field point is
-/// farther than [`FAR_FIELD`] element sizes from the element centre; `None` otherwise.
+/// Order of the far-field rule at distance `d` (in element sizes): the product rule's error
+/// behaves like $(4d/h)^{-2n}$ (nearest singularity of the kernels at the field point), which
+/// is below $10^{-16}$ for $n = 6$ from 6 sizes, $n = 4$ from 40 and $n = 3$ from 200.
+fn far_order(d_over_h: f64) -> usize {
+    if d_over_h > 200.0 {
+        3
+    } else if d_over_h > 40.0 {
+        4
+    } else {
+        6
+    }
+}
+
+/// The kernel integrals by a Gauss–Legendre product rule (order from [`far_order`]) when the
+/// field point is farther than [`FAR_FIELD`] element sizes from the element centre; `None`
+/// otherwise. `1/rho` is always summed; `XX` adds $X^2/\rho^3$ and `ALL` every kernel (the
+/// others are left at 0).
 ///
 /// Every kernel is homogeneous in $(X, Y)$: with $s = 1/d$ the scaled offsets $sX, sY$ are
 /// $O(1)$, and $1/\rho$, $X^2/\rho^3$, $Y^2/\rho^3$, $XY/\rho^3$ carry one factor $s$ while
 /// $X/\rho^2$, $Y/\rho^2$ do too; nothing overflows or underflows early.
 #[inline]
-fn far_field(r: &Rect, x: f64, y: f64) -> Option<KernelIntegrals> {
+fn far_field<const XX: bool, const ALL: bool>(r: &Rect, x: f64, y: f64) -> Option<KernelIntegrals> {
     let (hx, hy) = (r.x2 - r.x1, r.y2 - r.y1);
     let (cx, cy) = (0.5 * (r.x1 + r.x2), 0.5 * (r.y1 + r.y2));
     let (dx, dy) = (x - cx, y - cy);
@@ -185,7 +206,7 @@ fn far_field(r: &Rect, x: f64, y: f64) -> Option<KernelIntegrals> {
         return None;
     }
     let s = 1.0 / d;
-    let (t, w) = gauss6();
+    let (t, w) = gauss(far_order(d / h));
     let mut k = KernelIntegrals::default();
     for (ti, wi) in t.iter().zip(w) {
         let a = (dx - 0.5 * hx * ti) * s;
@@ -193,15 +214,20 @@ fn far_field(r: &Rect, x: f64, y: f64) -> Option<KernelIntegrals> {
             let b = (dy - 0.5 * hy * tj) * s;
             let wij = wi * wj;
             let rho2 = a * a + b * b;
-            let rho = rho2.sqrt();
-            let inv_r = 1.0 / rho;
-            let inv_r3 = inv_r / rho2;
+            let inv_r = 1.0 / rho2.sqrt();
             k.inv_r += wij * inv_r;
-            k.xx_r3 += wij * a * a * inv_r3;
-            k.yy_r3 += wij * b * b * inv_r3;
-            k.xy_r3 += wij * a * b * inv_r3;
-            k.x_r2 += wij * a / rho2;
-            k.y_r2 += wij * b / rho2;
+            // Only the kernels the caller uses are summed (the generic flags are constants,
+            // so each instance is a branch-free loop).
+            if XX || ALL {
+                let inv_r3 = inv_r / rho2;
+                k.xx_r3 += wij * a * a * inv_r3;
+                if ALL {
+                    k.yy_r3 += wij * b * b * inv_r3;
+                    k.xy_r3 += wij * a * b * inv_r3;
+                    k.x_r2 += wij * a / rho2;
+                    k.y_r2 += wij * b / rho2;
+                }
+            }
         }
     }
     // Jacobian of the map to [-1, 1]^2, and the factor 1/s = d of the homogeneous kernels
@@ -222,7 +248,7 @@ fn far_field(r: &Rect, x: f64, y: f64) -> Option<KernelIntegrals> {
 #[inline]
 #[must_use]
 pub fn inv_r_integral(r: &Rect, x: f64, y: f64) -> f64 {
-    if let Some(k) = far_field(r, x, y) {
+    if let Some(k) = far_field::<false, false>(r, x, y) {
         return k.inv_r;
     }
     let mut s = 0.0;
@@ -241,7 +267,7 @@ pub fn inv_r_integral(r: &Rect, x: f64, y: f64) -> f64 {
 #[inline]
 #[must_use]
 pub fn kernel_integrals(r: &Rect, x: f64, y: f64) -> KernelIntegrals {
-    if let Some(k) = far_field(r, x, y) {
+    if let Some(k) = far_field::<true, true>(r, x, y) {
         return k;
     }
     let mut k = KernelIntegrals::default();
@@ -326,7 +352,7 @@ pub fn shear_x_displacement(c: &Compliance, r: &Rect, x: f64, y: f64) -> Displac
 #[inline]
 #[must_use]
 pub fn shear_x_ux(c: &Compliance, r: &Rect, x: f64, y: f64) -> f64 {
-    if let Some(k) = far_field(r, x, y) {
+    if let Some(k) = far_field::<true, false>(r, x, y) {
         return (c.one_minus_nu * k.inv_r + c.nu * k.xx_r3) / (2.0 * PI);
     }
     let mut s1 = 0.0;
