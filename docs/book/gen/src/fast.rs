@@ -8,6 +8,13 @@
 //! $256^2$ and $512^2$ cases of issue 6 are in the traction crate's tests and in the
 //! accuracy report.
 
+/// Scale for [`resid`] of the fast solver's own final residuals: bounds at 1e-11, ten times
+/// below the default tolerance 1e-10 (noise of an inexact-CG iteration, not rounding).
+const SOLVER_SCALE: f64 = 100.0;
+/// Scale for [`resid`] of optimality defects recomputed from a converged solve: bounds at
+/// 1e-12 (they inherit the solver's stopping residual, a little below it).
+const OPTIMALITY_SCALE: f64 = 10.0;
+
 use crate::fmt::{err, num, pct, resid, sig, Table};
 use crate::mindlin::{example1, example1_inputs};
 use crate::{check, tol, Context, Error};
@@ -258,17 +265,20 @@ fn mindlin(out: &mut String) -> Result<Sphere, Error> {
             sol.info.iterations.to_string(),
             sol.info.cg_iterations.to_string(),
             sol.info.products.to_string(),
-            resid(sol.info.residual, 1.0),
-            resid(sol.info.load_residual, 1.0),
+            // A converged solve stops once its residual is below the tolerance (1e-10); where
+            // in the last decades it lands moves with the last bits of the kernels, so the
+            // page states the bound 1e-11 (SOLVER_SCALE x ROUNDING) the solves are checked at.
+            resid(sol.info.residual, SOLVER_SCALE),
+            resid(sol.info.load_residual, SOLVER_SCALE),
             format!("{:+.2}", cells_off),
             pct(shift_rel),
         ]);
         o.row(vec![
             format!("{side}²"),
-            resid(opt[0], 1.0),
-            resid(opt[1], 1.0),
-            resid(opt[2], 1.0),
-            resid(opt[3], 1.0),
+            resid(opt[0], OPTIMALITY_SCALE),
+            resid(opt[1], OPTIMALITY_SCALE),
+            resid(opt[2], OPTIMALITY_SCALE),
+            resid(opt[3], OPTIMALITY_SCALE),
         ]);
         kept = Some(Sphere { grid, bodies: [s, s], f, p, t: tl, a: m.radius(), free: sol });
     }

@@ -74,9 +74,12 @@ pub fn resid(x: f64, scale: f64) -> String {
     }
 }
 
-/// The smallest power of ten $\ge v$ ($v > 0$ finite), exact in its decimal form.
+/// The smallest power of ten $\ge v$ ($v > 0$ finite), exact in its decimal form. A `v` within
+/// a few ulp above a power of ten (e.g. `1e-13 * 100.0` = 1.0000000000000002e-11) counts as
+/// that power, so the bound does not jump a decade on rounding.
 fn pow10_at_least(v: f64) -> f64 {
     let p = |e: i32| format!("1e{e}").parse::<f64>().unwrap_or(f64::INFINITY);
+    let v = v * (1.0 - 8.0 * f64::EPSILON);
     let mut e = v.log10().ceil() as i32;
     while p(e) < v {
         e += 1;
