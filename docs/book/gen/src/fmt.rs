@@ -188,7 +188,11 @@ mod tests {
         assert_eq!(resid(2.0e-19, 0.0045), "< 1e-15");
         assert_eq!(resid(f64::NAN, 1.0), "NaN");
         assert_eq!(pow10_at_least(1e-13), 1e-13);
-        assert_eq!(pow10_at_least(1.0000000000000002e-13), 1e-12);
+        // One ulp above a power of ten is that power (rounding of 1e-13 * scale), while a
+        // value clearly above it moves up a decade.
+        assert_eq!(pow10_at_least(1.0000000000000002e-13), 1e-13);
+        assert_eq!(pow10_at_least(1e-13 * 100.0), 1e-11);
+        assert_eq!(pow10_at_least(1.001e-13), 1e-12);
         assert_eq!(pow10_at_least(0.999e-3), 1e-3);
     }
 }
