@@ -2,7 +2,7 @@
 """Reference data for stickslip-rolling: Goryacheva (1973) viscoelastic rolling.
 
 Solves the UNSCALED equations of Goryacheva, PMM 37(5) 1973 (seed 001; corrected
-forms in ../shared/spec/FORMULAS.md section D) with mpmath at mp.dps = 50:
+forms in docs/FORMULAS.md section D) with mpmath at mp.dps = 50:
 
   eq 19  [P - l^2/(8KR)] [I0(x1) K1(x2) + K0(x2) I1(x1)]
              + w (beta - alpha) l/(2KR) I1(x1) K1(x2) = 0,   x1 = l/(2 beta w), x2 = l/(2 alpha w)

@@ -1,5 +1,5 @@
 //! Verification of the three source texts: every published figure, table and numerical claim
-//! listed in `../shared/spec/VERIFICATION.md`, recomputed with the physics crates, set beside
+//! listed in `docs/VERIFICATION.md`, recomputed with the physics crates, set beside
 //! the published value, and attributed where the two differ.
 //!
 //! - [`published`]: the published values, typed once, each with its source.

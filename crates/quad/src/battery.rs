@@ -2,7 +2,7 @@
 //! 40 digits from `scripts/quad_battery.py`, stored in `tests/data/battery.csv`), the methods
 //! of this crate, and a runner that returns one [`Row`] per (method, integrand) pair.
 //!
-//! The integrands include the kernels of `../shared/spec/FORMULAS.md`: the graded spectral
+//! The integrands include the kernels of `docs/FORMULAS.md`: the graded spectral
 //! relation of §A4, $I_k$ and $J_k$ of §A1, and the Cauchy integral of §C.
 
 use std::f64::consts::{FRAC_PI_2, PI};

@@ -16,7 +16,7 @@
 //! values) used by the tests and the project's report.
 //!
 //! This crate knows nothing about contact mechanics (ARCHITECTURE.md); the kernels of
-//! `../shared/spec/FORMULAS.md` appear only as test integrands.
+//! `docs/FORMULAS.md` appear only as test integrands.
 
 mod error;
 mod gamma;

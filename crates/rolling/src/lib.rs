@@ -3,7 +3,7 @@
 //!
 //! - [`carter`](mod@carter): elastic cylinders, closed form (half-width, stick zone, creep law, tractions).
 //! - [`goryacheva`]: the viscoelastic problem of Goryacheva, PMM 37(5) 1973 (seed 001), in the
-//!   corrected forms of `../shared/spec/FORMULAS.md` section D, solved through scaled
+//!   corrected forms of `docs/FORMULAS.md` section D, solved through scaled
 //!   equations that contain only the bounded ratios $I_1/I_0$ and $K_0/K_1$, with analytic
 //!   brackets for both roots; pressure and shear (eqs 12, 13) by quadrature.
 //! - [`sweep`]: the seed's claim $l\approx\sqrt{8KRP\beta/\alpha}$ over its stated grid.
