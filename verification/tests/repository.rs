@@ -247,10 +247,6 @@ fn physics_crates_do_not_depend_on_upper_layers() {
 /// extensions.
 const CHECKED: [&str; 5] = ["md", "rs", "toml", "py", "txt"];
 
-/// Files that may still refer outside the repository, each with the reason.
-// TODO(issue 14): removed by the scene redesign
-const KNOWN_OUTSIDE: [&str; 1] = ["crates/scene/src/lib.rs"];
-
 fn repository_files(root: &Path) -> Vec<PathBuf> {
     let out = Command::new("git")
         .args(["ls-files", "-z", "--cached", "--others", "--exclude-standard"])
@@ -340,7 +336,7 @@ fn nothing_links_outside_the_repository() {
         for (i, line) in text.lines().enumerate() {
             let at = format!("{name}:{}", i + 1);
             for o in outside {
-                if line.contains(o) && !KNOWN_OUTSIDE.contains(&name.as_str()) {
+                if line.contains(o) {
                     wrong.push(format!(
                         "{at}: refers to `{o}`, outside the repository; point to the in-repo page (docs/FORMULAS.md, docs/SCENES.md, docs/VERIFICATION.md) instead"
                     ));

@@ -259,7 +259,7 @@ fn solver_line(s: &SolverOut) -> String {
 fn cmd_explain(scene: Option<&PathBuf>) -> Result<(), SceneError> {
     let scene = load(scene)?;
     let plan = Plan::new(&scene)?;
-    print!("{}", plan.explain(&scene));
+    print!("{}", plan.explain());
     Ok(())
 }
 

@@ -31,6 +31,7 @@ mod error;
 pub mod load;
 pub mod material;
 mod panels;
+pub mod partial_slip;
 mod rules;
 pub mod stress;
 

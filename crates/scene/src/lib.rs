@@ -1,18 +1,21 @@
 //! Scenes: the user's way into stickslip.
 //!
 //! A scene is a TOML file describing one contact problem (bodies, materials, loads, motion,
-//! requested outputs); the contract is `../shared/spec/SCENES.md`. This crate is the only
-//! place (with the CLI) that knows about units, TOML and files; the physics crates work on
-//! plain SI numbers.
+//! requested outputs); its reference is the repository's `docs/SCENES.md`. This crate is the
+//! only place (with the CLI) that knows about units, TOML and files; the physics crates work
+//! on plain SI numbers.
+//!
+//! The path of a scene is **scene → validate → plan → execute**:
 //!
 //! - [`units`]: quantities with units to SI;
 //! - [`Scene`]: parsing and validation, with errors naming file, line, column, key and what is
 //!   allowed, including the combinations the planner refuses;
-//! - [`plan`]: the effect planner ([`Plan`]): effects on/off with reasons, the technique per
-//!   effect (closed form where one applies), the estimated cost; `explain` prints it;
-//! - [`run()`]: the one code path from a scene to an [`Outcome`] (result.json), dispatching to
-//!   the physics crates for the effects that are on and nothing else ([`Evaluations`] counts
-//!   what ran);
+//! - [`plan`]: the planner ([`Plan::new`]): a typed [`Recipe`] (the method and resolved
+//!   inputs of every stage), the effects on/off with reasons, the estimated cost; `explain`
+//!   prints it;
+//! - [`exec`]: [`Plan::execute`] runs the recipe stage by stage (normal contact → friction
+//!   → twist → rolling → load cycle → subsurface field) into an [`Outcome`] (result.json),
+//!   deciding nothing again ([`Evaluations`] counts what ran); [`run()`] is plan + execute;
 //! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing;
 //! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
 //!   techniques per scene, from the planner alone.
@@ -25,23 +28,34 @@
 //! ```
 
 mod error;
+pub mod exec;
 mod output;
 mod overview;
 pub mod plan;
 mod plots;
 mod raw;
-mod run;
 mod scene;
 pub mod units;
 
 pub use error::{ErrorKind, SceneError};
+pub use exec::outcome::{
+    ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, GridZones, Outcome, Progress,
+    RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
+};
 pub use output::{write_outputs, Written};
 pub use overview::scenes_page;
+pub use plan::recipe::Recipe;
 pub use plan::{Cost, Effect, EffectPlan, Plan, Technique};
-pub use run::{
-    run, ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, GridZones, Outcome,
-    Progress, RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
-};
+
+/// Plan `scene` and execute the plan: [`Plan::new`] then [`Plan::execute`].
+///
+/// # Errors
+/// A [`SceneError`] for a scene the planner refuses, or (kind [`ErrorKind::Solver`]) when a
+/// physics routine fails or returns a non-finite number.
+#[allow(clippy::result_large_err)]
+pub fn run(scene: &Scene, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
+    Plan::new(scene)?.execute(opts)
+}
 pub use scene::{
     Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
     NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Substrate, DEFAULT_SCENE,

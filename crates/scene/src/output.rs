@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::error::{ErrorKind, SceneError};
-use crate::run::{Outcome, SurfaceOut};
+use crate::exec::outcome::{Outcome, SurfaceOut};
 
 /// What [`write_outputs`] wrote.
 #[derive(Debug, Clone, PartialEq, Eq)]

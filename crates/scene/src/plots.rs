@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use crate::run::{Outcome, SurfaceOut};
+use crate::exec::outcome::{Outcome, SurfaceOut};
 
 type PlotResult = Result<String, String>;
 

@@ -1,5 +1,5 @@
 //! The scene file as written: TOML tables with spans, before units and validation.
-//! Field names here ARE the format (SCENES.md); `deny_unknown_fields` makes a misspelt key
+//! Field names here ARE the format (docs/SCENES.md); `deny_unknown_fields` makes a misspelt key
 //! an error instead of a silently ignored setting.
 
 use serde::Deserialize;

@@ -147,6 +147,24 @@ impl Patch {
     }
 }
 
+/// Bounding box of the patches: (lower-left, upper-right).
+pub(crate) fn patch_bounds(ps: &[Patch]) -> ([f64; 2], [f64; 2]) {
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for p in ps {
+        let h = match p.shape {
+            PatchShape::Square { side } => [side / 2.0; 2],
+            PatchShape::Rectangle { sides } => [sides[0] / 2.0, sides[1] / 2.0],
+            PatchShape::Circle { radius } => [radius; 2],
+        };
+        for d in 0..2 {
+            lo[d] = lo[d].min(p.centre[d] - h[d]);
+            hi[d] = hi[d].max(p.centre[d] + h[d]);
+        }
+    }
+    (lo, hi)
+}
+
 /// An elastic material.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Elastic {
@@ -500,7 +518,7 @@ impl Scene {
                 ErrorKind::Syntax
             };
             let hint = if kind == ErrorKind::Schema {
-                "see SCENES.md for the keys each table takes; units go in strings, e.g. \"10 mm\""
+                "see docs/SCENES.md for the keys each table takes; units go in strings, e.g. \"10 mm\""
             } else {
                 "the file must be valid TOML (https://toml.io)"
             };
@@ -963,11 +981,7 @@ fn convert(cx: &Ctx<'_>, raw: RawScene) -> Result<Scene, SceneError> {
     };
     // Combinations no solver handles, and checks that need the contact size, are refused
     // here, located at the key the planner names.
-    let issue = match crate::plan::build(&scene) {
-        Err(i) => Some(i),
-        Ok(_) => crate::run::pre_check(&scene),
-    };
-    if let Some(i) = issue {
+    if let Err(i) = crate::plan::check(&scene) {
         let span = key_span(&raw, i.key);
         return Err(cx.err(i.kind, i.key, span, i.message).hint(i.hint));
     }

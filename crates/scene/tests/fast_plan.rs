@@ -50,7 +50,7 @@ fn auto_picks_the_lp_up_to_its_limit_and_the_fast_solver_beyond() {
             plan.cost.seconds
         );
         assert_eq!(plan.technique(Effect::Friction), Some(want), "grid {grid}");
-        let text = plan.explain(&s);
+        let text = plan.explain();
         assert!(text.contains("grid solver:"), "{text}");
         if want == Technique::Fast {
             assert!(why.contains(&format!("> {MAX_LP_ELEMENTS}")) && why.contains("fast"), "{why}");
@@ -82,7 +82,7 @@ fn force_and_moment_together_go_to_the_fast_solver() {
         .replace("friction = 0.1", "friction = 0.1\nmoment = 0.1");
     let s = parse(&base);
     let plan = Plan::new(&s).unwrap();
-    println!("{}", plan.explain(&s));
+    println!("{}", plan.explain());
     assert_eq!(plan.technique(Effect::Friction), Some(Technique::Fast));
     assert_eq!(plan.technique(Effect::Twist), Some(Technique::Fast));
     assert!(plan.grid_solver.as_deref().unwrap().contains("together"));

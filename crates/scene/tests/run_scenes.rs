@@ -460,7 +460,7 @@ fn switching_an_effect_off_removes_its_evaluations() {
 fn explain_lists_every_effect_with_a_reason_and_computes_nothing() {
     let s = Scene::default_scene();
     let plan = Plan::new(&s).unwrap();
-    let text = plan.explain(&s);
+    let text = plan.explain();
     println!("{text}");
     for e in Effect::ALL {
         assert!(text.contains(e.name()), "{e} missing");

@@ -7,6 +7,7 @@
 //! and E (sphere). Loads are positive, pressures positive in compression.
 
 mod ellipse;
+pub mod strip;
 
 pub use ellipse::HertzEllipse;
 
@@ -141,6 +142,14 @@ impl HertzSphere {
         positive("e_star", e_star)?;
         let a = (3.0 * load * radius / (4.0 * e_star)).cbrt();
         Ok(Self { load, radius, e_star, a, p0: 3.0 * load / (2.0 * PI * a * a) })
+    }
+
+    /// The load that gives contact radius `a` on a sphere of relative radius `radius` with
+    /// composite modulus `e_star`: $P = 4E^*a^3/(3R)$, the inverse of
+    /// $a^3 = 3PR/(4E^*)$ (Johnson eq 4.22; FORMULAS.md E).
+    #[must_use]
+    pub fn load_for_contact_radius(a: f64, radius: f64, e_star: f64) -> f64 {
+        4.0 * e_star * a.powi(3) / (3.0 * radius)
     }
 
     /// Load $P$.

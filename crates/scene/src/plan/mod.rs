@@ -1,9 +1,11 @@
 //! The effect planner: which physical effects a scene calls for, why, and which technique
-//! serves each (SCENES.md, "Effects").
+//! serves each (docs/SCENES.md, "Effects").
 //!
-//! The planner reads a validated [`Scene`] and decides, without computing anything:
+//! The planner reads a validated [`Scene`] and decides, without computing anything, a
+//! [`Plan`]: a typed [`Recipe`] that [`Plan::execute`] runs stage by stage and nothing
+//! else, and the explanation `explain` prints:
 //!
-//! - for each of the eight effects of SCENES.md, whether it is on, with the reason;
+//! - for each of the eight effects of docs/SCENES.md, whether it is on, with the reason;
 //! - for each effect that is on, the [`Technique`] that will compute it (a closed form where
 //!   one exists and applies, a numerical method otherwise, or what `solver.method` asks for);
 //! - for 3D partial slip without a closed form, the grid solver and why: under
@@ -14,15 +16,28 @@
 //!
 //! It also refuses, before any computation, the combinations no solver in the workspace
 //! handles (a graded sphere, a twisting moment together with a tangential force by the LP,
-//! ...), each with the key to change and a hint. [`crate::run`] dispatches on the plan and nothing else,
-//! so an effect that is off is never evaluated.
+//! ...), each with the key to change and a hint. Execution ([`crate::exec`]) follows the
+//! recipe and decides nothing again, so an effect that is off is never evaluated.
+//!
+//! Files: `checks.rs` (refusals, tolerances, capacity checks), `build.rs` (the recipe and
+//! the effects with their reasons), `cost.rs` (the estimate and the memory refusals),
+//! `recipe.rs` (the types).
 
 use std::fmt;
 
-use crate::error::{ErrorKind, SceneError};
-use crate::scene::{Ellipse, Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate};
+mod build;
+mod checks;
+mod cost;
+pub mod recipe;
 
-/// One of the physical effects of SCENES.md.
+pub use cost::MEMORY_LIMIT_BYTES;
+pub use recipe::Recipe;
+
+use crate::error::{ErrorKind, SceneError};
+use crate::scene::Scene;
+use cost::{human_bytes, human_seconds};
+
+/// One of the physical effects of docs/SCENES.md.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[non_exhaustive]
 pub enum Effect {
@@ -45,7 +60,7 @@ pub enum Effect {
 }
 
 impl Effect {
-    /// Every effect, in the order of SCENES.md.
+    /// Every effect, in the order of docs/SCENES.md.
     pub const ALL: [Effect; 8] = [
         Effect::NormalContact,
         Effect::Friction,
@@ -57,7 +72,7 @@ impl Effect {
         Effect::SubsurfaceField,
     ];
 
-    /// The name used in SCENES.md and in result.json.
+    /// The name used in docs/SCENES.md and in result.json.
     pub fn name(self) -> &'static str {
         match self {
             Effect::NormalContact => "normal contact",
@@ -82,7 +97,7 @@ impl fmt::Display for Effect {
     }
 }
 
-/// How an effect is computed: the physics-crate routine [`crate::run`] calls for it.
+/// How an effect is computed: the physics-crate routine the executor calls for it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Technique {
@@ -292,6 +307,17 @@ pub struct Plan {
     pub cost: Cost,
     /// Statements about modelling assumptions the user should know.
     pub notes: Vec<String>,
+    /// The scene's title.
+    pub title: String,
+    /// The scene file, when the scene came from one (for messages).
+    pub file: Option<std::path::PathBuf>,
+    /// What execution does: the method and resolved inputs of every stage.
+    pub recipe: Recipe,
+}
+
+/// The planner's refusal of `scene`, if any (the scene reader locates it in the file).
+pub(crate) fn check(scene: &Scene) -> Result<(), Issue> {
+    build::build(scene).map(|_| ())
 }
 
 /// Points along the surface of 2D results.
@@ -310,19 +336,6 @@ pub(crate) struct Issue {
     pub hint: String,
 }
 
-fn issue(
-    kind: ErrorKind,
-    key: &'static str,
-    message: impl Into<String>,
-    hint: impl Into<String>,
-) -> Issue {
-    Issue { kind, key, message: message.into(), hint: hint.into() }
-}
-
-fn unsupported(key: &'static str, message: impl Into<String>, hint: impl Into<String>) -> Issue {
-    issue(ErrorKind::Unsupported, key, message, hint)
-}
-
 impl Plan {
     /// Plan `scene`.
     ///
@@ -331,9 +344,18 @@ impl Plan {
     /// [`Scene::from_toml_str`] has already passed this check (with line and column).
     #[allow(clippy::result_large_err)]
     pub fn new(scene: &Scene) -> Result<Plan, SceneError> {
-        build(scene).map_err(|i| {
+        build::build(scene).map_err(|i| {
             SceneError::new(i.kind, i.message).key(i.key).hint(i.hint).in_file(scene.file.clone())
         })
+    }
+
+    /// Run this plan, stage by stage ([`crate::exec::execute`]).
+    ///
+    /// # Errors
+    /// See [`crate::exec::execute`].
+    #[allow(clippy::result_large_err)]
+    pub fn execute(&self, opts: &crate::RunOptions<'_>) -> Result<crate::Outcome, SceneError> {
+        crate::exec::execute(self, opts)
     }
 
     /// The entry of `effect`.
@@ -352,10 +374,10 @@ impl Plan {
     }
 
     /// The plan as `explain` prints it.
-    pub fn explain(&self, scene: &Scene) -> String {
+    pub fn explain(&self) -> String {
         let mut s = String::new();
-        s.push_str(&format!("scene: {}\n", scene.title));
-        if let Some(f) = &scene.file {
+        s.push_str(&format!("scene: {}\n", self.title));
+        if let Some(f) = &self.file {
             s.push_str(&format!("file:  {}\n", f.display()));
         }
         s.push_str("\neffects on:\n");
@@ -394,636 +416,6 @@ impl Plan {
             human_bytes(c.memory_bytes)
         ));
         s
-    }
-}
-
-fn human_seconds(s: f64) -> String {
-    if s < 1e-3 {
-        "under a millisecond".to_string()
-    } else if s < 1.0 {
-        format!("{:.0} ms", s * 1e3)
-    } else {
-        format!("{s:.1} s")
-    }
-}
-
-fn human_bytes(b: u64) -> String {
-    let b = b as f64;
-    if b < 1e6 {
-        format!("{:.0} kB", b / 1e3)
-    } else if b < 1e9 {
-        format!("{:.0} MB", b / 1e6)
-    } else {
-        format!("{:.1} GB", b / 1e9)
-    }
-}
-
-/// Elements of the lattice a 3D scene is solved or sampled on.
-pub(crate) fn lattice_elements(scene: &Scene) -> usize {
-    let n = scene.solver.grid;
-    match &scene.geometry {
-        // elements whose centres lie inside the circle / ellipse of the bounding box
-        Geometry::Sphere { .. } | Geometry::Ellipsoid(_) => {
-            (std::f64::consts::FRAC_PI_4 * (n * n) as f64).round() as usize
-        }
-        Geometry::Patches(ps) => {
-            let (lo, hi) = crate::run::patch_bounds(ps);
-            let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
-            let area: f64 = ps.iter().map(|p| p.shape.area()).sum();
-            (area / (h * h)).round() as usize
-        }
-        _ => 0,
-    }
-}
-
-pub(crate) fn identical_materials(scene: &Scene) -> bool {
-    match (scene.indenter, scene.substrate) {
-        (Indenter::Same, _) => true,
-        (Indenter::Homogeneous(i), Substrate::Homogeneous(s)) => i == s,
-        (Indenter::Homogeneous(i), Substrate::Viscoelastic { elastic, .. }) => i == elastic,
-        _ => false,
-    }
-}
-
-/// Whether an ellipse load direction lies along one of the axes (the Cattaneo closed form).
-fn along_axis(deg: f64) -> bool {
-    let r = deg.rem_euclid(90.0);
-    r.min(90.0 - r) < 1e-9
-}
-
-#[allow(clippy::too_many_lines)]
-pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
-    use Effect as E;
-    use Technique as T;
-    let g = &scene.geometry;
-    let l = &scene.load;
-    let method = scene.solver.method;
-    let two_d = g.is_2d();
-    let rolling = matches!(scene.motion, Motion::Rolling { .. });
-    let graded_k = match scene.substrate {
-        Substrate::Graded { k, .. } => Some(k),
-        _ => None,
-    };
-    let grading = graded_k.is_some_and(|k| k > 0.0);
-    let visco = match scene.substrate {
-        Substrate::Viscoelastic { alpha, beta, .. } => Some(alpha != beta),
-        _ => None,
-    };
-    let mut notes = Vec::new();
-    if visco == Some(false) && !rolling {
-        notes.push("alpha = beta: the standard solid is elastic with modulus E; solved as a homogeneous elastic body".to_string());
-    }
-
-    // ---- combinations no solver handles -------------------------------------------------
-    if method == Method::Fast && (two_d || rolling) {
-        return Err(unsupported(
-            "solver.method",
-            "the fast solver works on 3D contact grids (sphere, ellipsoid, patches); 2D and rolling contacts use closed forms or quadrature",
-            "use method = \"auto\", \"closed-form\" or \"quadrature\"",
-        ));
-    }
-    if visco == Some(true) && !rolling {
-        return Err(unsupported(
-            "substrate.model",
-            "a viscoelastic substrate is solved in steady rolling (Goryacheva 1973); static viscoelastic indentation is not",
-            "add [motion] kind = \"rolling\" with a speed, or use model = \"homogeneous\" with the relaxed modulus",
-        ));
-    }
-    if graded_k.is_some() && !matches!(g, Geometry::Cylinder { .. }) {
-        return Err(unsupported(
-            "geometry.kind",
-            "the graded substrate is solved for a rigid cylinder (seed 000, G&P 2000)",
-            "use geometry.kind = \"cylinder\", or a homogeneous substrate",
-        ));
-    }
-    if graded_k.is_some() && scene.indenter != Indenter::Rigid {
-        return Err(unsupported(
-            "indenter.model",
-            "the graded-substrate solution (FORMULAS.md A4) is for a rigid cylinder",
-            "use [indenter] model = \"rigid\"",
-        ));
-    }
-    if rolling {
-        if graded_k.is_some() {
-            return Err(unsupported(
-                "motion.kind",
-                "rolling is solved for homogeneous (Carter) and viscoelastic (Goryacheva) bodies, not graded ones",
-                "use motion.kind = \"static\", or a homogeneous / viscoelastic substrate",
-            ));
-        }
-        if !matches!(g, Geometry::Cylinder { .. }) {
-            return Err(unsupported(
-                "geometry.kind",
-                "rolling needs a cylinder",
-                "use geometry.kind = \"cylinder\"",
-            ));
-        }
-        if !identical_materials(scene) {
-            return Err(unsupported(
-                "indenter.model",
-                "Carter and Goryacheva solve a cylinder rolling on a base of the same material",
-                "use [indenter] model = \"same\"",
-            ));
-        }
-        if !matches!(l.normal, NormalLoad::Force(_)) {
-            return Err(unsupported(
-                "load.half_width",
-                "rolling takes the normal load; the contact length follows from it",
-                "give load.normal = P (N/m)",
-            ));
-        }
-        if l.tangential != 0.0 || l.sliding {
-            return Err(issue(
-                ErrorKind::Impossible,
-                "load.tangential",
-                "in steady rolling the tangential force follows from the creep; it cannot also be prescribed",
-                "remove load.tangential / load.sliding and set motion.creep",
-            ));
-        }
-        if l.friction <= 0.0 {
-            return Err(issue(
-                ErrorKind::Impossible,
-                "load.friction",
-                "rolling with stick and slip needs a friction coefficient",
-                "give load.friction > 0",
-            ));
-        }
-        if scene.outputs.field.is_some() {
-            return Err(unsupported(
-                "outputs.field",
-                "subsurface fields are not computed for rolling contacts in this version",
-                "remove outputs.field",
-            ));
-        }
-        if matches!(method, Method::Lp) {
-            return Err(unsupported(
-                "solver.method",
-                "the LP is a 3D grid solver; rolling uses Carter or Goryacheva",
-                "use method = \"auto\"",
-            ));
-        }
-        if method == Method::ClosedForm && visco == Some(true) {
-            return Err(unsupported(
-                "solver.method",
-                "viscoelastic rolling has no closed form (Goryacheva's eqs 19 and 24 are solved numerically)",
-                "use method = \"auto\" or \"quadrature\"",
-            ));
-        }
-    }
-    if scene.outputs.cycle.is_some() {
-        if !matches!(g, Geometry::Sphere { .. }) {
-            return Err(unsupported(
-                "outputs.cycle",
-                "the Mindlin-Deresiewicz cycle is solved for a sphere (Hertz circle)",
-                "use geometry.kind = \"sphere\", or remove outputs.cycle",
-            ));
-        }
-        if l.friction <= 0.0 {
-            return Err(issue(
-                ErrorKind::Impossible,
-                "load.friction",
-                "a loading cycle needs friction",
-                "give load.friction > 0",
-            ));
-        }
-        if l.sliding {
-            return Err(issue(
-                ErrorKind::Impossible,
-                "load.sliding",
-                "a loading cycle below gross slip cannot be combined with full sliding",
-                "set sliding = false",
-            ));
-        }
-    }
-    if two_d {
-        if matches!(method, Method::Lp) {
-            return Err(unsupported(
-                "solver.method",
-                "the LP is a 3D grid solver; 2D contacts use closed forms or quadrature",
-                "use method = \"auto\", \"closed-form\" or \"quadrature\"",
-            ));
-        }
-        if matches!(g, Geometry::Punch { .. }) && l.tangential != 0.0 {
-            return Err(unsupported(
-                "load.tangential",
-                "partial slip under a flat punch is not solved in this version",
-                "use sliding = true (q = f p), or a cylinder",
-            ));
-        }
-    } else {
-        if scene.outputs.field.is_some() {
-            return Err(unsupported(
-                "outputs.field",
-                "subsurface fields are computed for 2D contacts (cylinder, punch) in this version",
-                "remove outputs.field, or use a cylinder",
-            ));
-        }
-        if l.tangential != 0.0
-            && l.moment != 0.0
-            && matches!(method, Method::Lp | Method::ClosedForm)
-        {
-            return Err(unsupported(
-                "load.moment",
-                "a tangential force and a twisting moment together have no closed form, and the LP takes one load mode",
-                "use method = \"fast\" (or \"auto\"), or give either load.tangential or load.moment",
-            ));
-        }
-        if l.sliding && l.moment != 0.0 {
-            return Err(issue(ErrorKind::Impossible, "load.moment", "with sliding = true the traction is q = f p along the sliding direction; a moment cannot also be prescribed", "remove load.moment or sliding"));
-        }
-        if l.moment != 0.0 && l.friction <= 0.0 {
-            return Err(issue(
-                ErrorKind::Impossible,
-                "load.moment",
-                "a twisting moment on a frictionless contact cannot be carried",
-                "give load.friction > 0",
-            ));
-        }
-        if method == Method::Quadrature && (l.tangential != 0.0 || l.moment != 0.0) {
-            return Err(unsupported(
-                "solver.method",
-                "3D partial slip is solved by closed forms or grid solvers (LP, fast), not by quadrature",
-                "use method = \"auto\", \"closed-form\", \"lp\" or \"fast\"",
-            ));
-        }
-    }
-    if let (Geometry::Sphere { .. }, true) = (g, l.moment != 0.0) {
-        // Lubkin's gross-slip moment 3 pi f P a / 16 is checked in run once a is known.
-    }
-    if method == Method::ClosedForm {
-        if grading {
-            return Err(unsupported(
-                "solver.method",
-                "a graded substrate's displacements and stresses have no closed form; they are integrated numerically",
-                "use method = \"auto\" or \"quadrature\"",
-            ));
-        }
-        if matches!(g, Geometry::Patches(_)) && (l.tangential != 0.0 || l.moment != 0.0) {
-            return Err(unsupported(
-                "solver.method",
-                "patches under a tangential load have no closed form",
-                "use method = \"auto\", \"lp\" or \"fast\"",
-            ));
-        }
-        if matches!(g, Geometry::Ellipsoid(_)) && l.moment != 0.0 {
-            return Err(unsupported(
-                "solver.method",
-                "twisting an ellipse has no closed form",
-                "use method = \"auto\", \"lp\" or \"fast\"",
-            ));
-        }
-        if matches!(g, Geometry::Ellipsoid(_))
-            && l.tangential != 0.0
-            && !along_axis(l.direction_deg)
-        {
-            return Err(unsupported(
-                "solver.method",
-                "Cattaneo's closed form needs the load along an axis of the ellipse",
-                "use direction_deg = 0 or 90, or method = \"auto\"",
-            ));
-        }
-        if matches!(g, Geometry::Punch { .. }) && scene.outputs.field.is_some() {
-            return Err(unsupported(
-                "solver.method",
-                "the flat-punch field is integrated numerically here",
-                "use method = \"auto\"",
-            ));
-        }
-    }
-
-    // ---- the effects -------------------------------------------------------------------
-    let mut effects: Vec<EffectPlan> = Vec::with_capacity(8);
-    let on = |effect, reason: String, t: Technique| EffectPlan {
-        effect,
-        on: true,
-        reason,
-        technique: Some(t),
-    };
-    let off = |effect, reason: String| EffectPlan { effect, on: false, reason, technique: None };
-
-    // normal contact
-    let normal_t = match g {
-        Geometry::Cylinder { .. } if rolling => {
-            if visco == Some(true) {
-                T::Goryacheva
-            } else {
-                T::Carter
-            }
-        }
-        Geometry::Cylinder { .. } if grading => T::GradedCylinder,
-        Geometry::Cylinder { .. } => T::HertzLine,
-        Geometry::Punch { .. } => T::FlatPunch,
-        Geometry::Sphere { .. } => T::HertzSphere,
-        Geometry::Ellipsoid(Ellipse::Radii { .. }) => T::HertzEllipse,
-        Geometry::Ellipsoid(Ellipse::SemiAxes { .. }) => T::EllipseGiven,
-        Geometry::Patches(_) => T::PatchPressure,
-    };
-    effects.push(on(E::NormalContact, "always".to_string(), normal_t));
-
-    // The grid solver for 3D partial slip that has no closed form (or where one is asked for).
-    let both = l.tangential != 0.0 && l.moment != 0.0;
-    let elements = if two_d { 0 } else { lattice_elements(scene) };
-    let (grid_t, grid_reason) = grid_solver(method, elements, both);
-    let closed_ok = !matches!(method, Method::Lp | Method::Fast);
-
-    // friction
-    let f = l.friction;
-    let friction_cause = if l.tangential != 0.0 {
-        Some("a tangential load")
-    } else if l.sliding {
-        Some("sliding = true")
-    } else if l.moment != 0.0 {
-        Some("a twisting moment")
-    } else if rolling {
-        Some("rolling")
-    } else {
-        None
-    };
-    match (f > 0.0, friction_cause) {
-        (true, Some(cause)) => {
-            let t = if rolling {
-                normal_t
-            } else if l.sliding {
-                T::Sliding
-            } else if l.moment != 0.0 && l.tangential == 0.0 {
-                twist_technique(g, closed_ok, grid_t)
-            } else {
-                match g {
-                    Geometry::Cylinder { .. } if grading => T::GradedPartialSlip,
-                    Geometry::Cylinder { .. } => T::Cattaneo2d,
-                    Geometry::Sphere { .. } if closed_ok && !both => T::Mindlin,
-                    Geometry::Ellipsoid(_)
-                        if closed_ok && !both && along_axis(l.direction_deg) =>
-                    {
-                        T::Cattaneo
-                    }
-                    _ if grid_t == T::Fast => T::Fast,
-                    _ => T::LpForce,
-                }
-            };
-            if t == T::Cattaneo2d && !identical_materials(scene) {
-                notes.push("2D Cattaneo-Mindlin neglects the coupling of normal and tangential tractions; exact for identical materials only (Dundurs beta = 0)".to_string());
-            }
-            if t == T::GradedPartialSlip {
-                notes.push("graded partial slip: the stick zone is where the q-induced u_x is uniform; the pressure-induced odd part of u_x (FORMULAS.md A5) is neglected, as in Cattaneo-Mindlin".to_string());
-            }
-            if matches!(t, T::Mindlin | T::Cattaneo | T::Lubkin) && !identical_materials(scene) {
-                notes.push("Mindlin/Cattaneo/Lubkin neglect normal-tangential coupling (exact for identical materials)".to_string());
-            }
-            effects.push(on(E::Friction, format!("f = {f} > 0 with {cause}"), t));
-        }
-        (true, None) => effects.push(off(
-            E::Friction,
-            format!("f = {f} but no tangential load, sliding, moment or rolling: nothing for friction to carry"),
-        )),
-        (false, _) => effects.push(off(E::Friction, "friction coefficient is 0".to_string())),
-    }
-
-    // grading
-    match graded_k {
-        Some(k) if k > 0.0 => {
-            effects.push(on(E::Grading, format!("graded substrate with k = {k}"), T::GradedKernels))
-        }
-        Some(_) => effects.push(off(
-            E::Grading,
-            "graded substrate with k = 0 is homogeneous: solved as a homogeneous half-plane"
-                .to_string(),
-        )),
-        None => effects.push(off(E::Grading, "substrate is not graded".to_string())),
-    }
-
-    // viscoelasticity
-    match (visco, scene.substrate) {
-        (Some(true), Substrate::Viscoelastic { alpha, beta, .. }) => effects.push(on(
-            E::Viscoelasticity,
-            format!("standard solid with alpha = {alpha} s > beta = {beta} s"),
-            T::Goryacheva,
-        )),
-        (Some(false), _) => effects.push(off(
-            E::Viscoelasticity,
-            "alpha = beta: the standard solid is elastic; solved as elastic (Carter)".to_string(),
-        )),
-        _ => effects.push(off(E::Viscoelasticity, "no viscoelastic material".to_string())),
-    }
-
-    // rolling
-    if let Motion::Rolling { speed, creep } = scene.motion {
-        let t = if visco == Some(true) { T::Goryacheva } else { T::Carter };
-        effects.push(on(E::Rolling, format!("rolling at w = {speed} m/s, creep {creep}"), t));
-    } else {
-        effects.push(off(E::Rolling, "motion is static".to_string()));
-    }
-
-    // twist
-    if l.moment != 0.0 {
-        effects.push(on(
-            E::Twist,
-            format!("moment M = {} N m", l.moment),
-            if both { T::Fast } else { twist_technique(g, closed_ok, grid_t) },
-        ));
-    } else {
-        effects.push(off(E::Twist, "no twisting moment".to_string()));
-    }
-
-    // hysteresis
-    match scene.outputs.cycle {
-        Some(c) => effects.push(on(
-            E::Hysteresis,
-            format!("outputs.cycle with T*/(fP) = {}", c.amplitude),
-            T::Deresiewicz,
-        )),
-        None => effects.push(off(E::Hysteresis, "no outputs.cycle".to_string())),
-    }
-
-    // subsurface field
-    match scene.outputs.field {
-        Some(fg) => {
-            let t =
-                if grading || matches!(g, Geometry::Punch { .. }) || method == Method::Quadrature {
-                    T::StressQuadrature
-                } else {
-                    T::McEwen
-                };
-            effects.push(on(
-                E::SubsurfaceField,
-                format!("outputs.field with {} x {} points", fg.x.2, fg.y.2),
-                t,
-            ));
-        }
-        None => effects.push(off(E::SubsurfaceField, "no outputs.field".to_string())),
-    }
-
-    // ---- cost ----------------------------------------------------------------------------
-    let surface_points = if two_d && scene.outputs.surface { SURFACE_POINTS } else { 0 };
-    let grid_elements = elements;
-    let lp = effects.iter().any(|e| matches!(e.technique, Some(T::LpForce | T::LpMoment)));
-    let fast = effects.iter().any(|e| e.technique == Some(T::Fast));
-    if lp && grid_elements > MAX_LP_ELEMENTS {
-        return Err(issue(
-            ErrorKind::OutOfRange,
-            "solver.grid",
-            format!("the dense LP on about {grid_elements} elements needs about {} of memory and minutes of pivoting", human_bytes(lp_memory(grid_elements))),
-            format!("use a grid with at most {MAX_LP_ELEMENTS} contact elements (solver.grid about {} for a circle), or method = \"fast\"", ((MAX_LP_ELEMENTS as f64) / std::f64::consts::FRAC_PI_4).sqrt() as usize),
-        ));
-    }
-    let grid_solver = (lp || fast).then(|| grid_reason.clone());
-    let cells = if two_d { 0 } else { lattice_cells(scene) };
-    // Memory of the 3D lattice arrays (result, JSON and CSV text) and of the fast solver.
-    let grid_memory = cells as u64 * OUTPUT_BYTES_PER_CELL
-        + if fast { fast_memory(cells, grid_elements) } else { 0 };
-    if grid_memory > MEMORY_LIMIT_BYTES {
-        let side = scene.solver.grid;
-        let max_side =
-            (side as f64 * (MEMORY_LIMIT_BYTES as f64 / grid_memory as f64).sqrt()) as usize;
-        return Err(issue(
-            ErrorKind::OutOfRange,
-            "solver.grid",
-            format!(
-                "grid = {side} gives a lattice of {cells} cells ({grid_elements} contact elements) needing about {} of memory, more than the {} a run may use",
-                human_bytes(grid_memory),
-                human_bytes(MEMORY_LIMIT_BYTES)
-            ),
-            format!("use solver.grid <= {max_side} for this scene"),
-        ));
-    }
-    let mut evals: u64 = 1;
-    let mut secs = 1e-5;
-    let mut mem: u64 = 1 << 20;
-    if surface_points > 0 {
-        let per = if grading {
-            800
-        } else if visco == Some(true) {
-            600
-        } else {
-            4
-        };
-        evals += (surface_points * per) as u64;
-        secs += (surface_points * per) as f64 * 2e-8;
-    }
-    if let Some(fg) = scene.outputs.field {
-        let n = (fg.x.2 * fg.y.2) as u64;
-        let per = if effects[E::SubsurfaceField.index()].technique == Some(T::StressQuadrature) {
-            1200
-        } else {
-            6
-        };
-        evals += n * per;
-        secs += (n * per) as f64 * 2.5e-8;
-        mem += n * 64;
-    }
-    if grid_elements > 0 {
-        let n = grid_elements as u64;
-        evals += n;
-        if lp {
-            evals += n * n * 4;
-            secs += (n * n) as f64 * 2e-7 + (n * n * n) as f64 * 2e-9;
-            mem += lp_memory(grid_elements);
-        } else if fast {
-            // Each Newton step takes tens of CG iterations, one FFT product each; the count
-            // grows slowly with the grid (measured: see fast_seconds).
-            evals += n * FAST_PRODUCTS;
-            secs += fast_seconds(cells);
-        } else if effects[E::Twist.index()].technique == Some(T::Lubkin) {
-            evals += n * 200;
-            secs += n as f64 * 4e-6;
-        }
-    }
-    if let Some(c) = scene.outputs.cycle {
-        evals += 2 * c.points as u64 + 1;
-    }
-    Ok(Plan {
-        effects,
-        surface_points,
-        grid_elements,
-        grid_solver,
-        cost: Cost { evaluations: evals, seconds: secs, memory_bytes: mem + grid_memory },
-        notes,
-    })
-}
-
-/// The most memory a run may plan for: two thirds of a 24 GiB machine, leaving room for the
-/// operating system and for the error of the estimate. With the fast solver this admits
-/// grids up to about 5100 per side (about 12 GB at the measured rate) and refuses larger ones.
-pub const MEMORY_LIMIT_BYTES: u64 = 16 << 30;
-
-/// Result arrays per lattice cell of a 3D run: p, qx, qy and the stick flag in the result,
-/// their JSON tree for the finiteness check and the pretty JSON and CSV text.
-///
-/// Calibration (peak resident memory of `stickslip run --out` on the Mindlin sphere with the
-/// fast solver): 36 MB at grid 256, 129 MB at 512, 498 MB at 1024, i.e. 475 bytes per
-/// lattice cell in all. This constant and those of [`fast_memory`] add up to about 1.4
-/// times that, so the refusal errs on the safe side.
-const OUTPUT_BYTES_PER_CELL: u64 = 250;
-
-/// FFT products of a fast solve, roughly (for the evaluation count).
-const FAST_PRODUCTS: u64 = 300;
-
-/// Working memory of the fast solver for a lattice of `cells` cells with `elements` contact
-/// elements: the padded FFT lattice has about 4 cells per lattice cell (each side at least
-/// 2n - 1, rounded up to a 5-smooth size), holding three real kernel spectra and the
-/// convolution scratch; the Newton and CG vectors are per element. Calibrated with
-/// [`OUTPUT_BYTES_PER_CELL`] on measured peak memory.
-fn fast_memory(cells: usize, elements: usize) -> u64 {
-    cells as u64 * 200 + elements as u64 * 250
-}
-
-/// Seconds of a fast solve on a lattice of `cells` cells: measured on the Mindlin sphere
-/// (T/(fP) = 2/3, 2 shared cores) 1.7 s at 256^2, 12 s at 512^2, 91 s at 1024^2, i.e. about
-/// $1.7\,(N/256^2)^{1.45}$ s (FFT products cost N log N, their count grows with the grid).
-fn fast_seconds(cells: usize) -> f64 {
-    1.7 * (cells as f64 / 65536.0).powf(1.45)
-}
-
-/// Lattice cells of a 3D scene: `grid` x `grid` over the bounding box of a circle or
-/// ellipse; for patches, cells of side (largest extent)/`grid` over their bounding box.
-pub(crate) fn lattice_cells(scene: &Scene) -> usize {
-    let n = scene.solver.grid;
-    match &scene.geometry {
-        Geometry::Patches(ps) => {
-            let (lo, hi) = crate::run::patch_bounds(ps);
-            let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
-            let nx = ((hi[0] - lo[0]) / h).round().max(1.0) as usize;
-            let ny = ((hi[1] - lo[1]) / h).round().max(1.0) as usize;
-            nx * ny
-        }
-        _ => n * n,
-    }
-}
-
-fn lp_memory(n: usize) -> u64 {
-    // two projected n x n matrices plus the tableau (about 2n x 3n)
-    (8 * n * n * 8) as u64
-}
-
-fn twist_technique(g: &Geometry, closed_ok: bool, grid: Technique) -> Technique {
-    match g {
-        Geometry::Sphere { .. } if closed_ok => Technique::Lubkin,
-        _ if grid == Technique::Fast => Technique::Fast,
-        _ => Technique::LpMoment,
-    }
-}
-
-/// The grid solver for 3D partial slip without a closed form, and why: what
-/// `solver.method` asks for, or under `"auto"` the modified LP up to [`MAX_LP_ELEMENTS`]
-/// contact elements (exact for its discretisation, seed 002) and the fast solver beyond it
-/// or when a force and a moment act together (the LP takes one load mode). Returns
-/// [`Technique::Fast`] or [`Technique::LpForce`] (standing for the LP in either load mode).
-fn grid_solver(method: Method, elements: usize, both: bool) -> (Technique, String) {
-    match method {
-        Method::Lp => (Technique::LpForce, "solver.method = \"lp\"".to_string()),
-        Method::Fast => (Technique::Fast, "solver.method = \"fast\"".to_string()),
-        _ if both => (
-            Technique::Fast,
-            "a tangential force and a twisting moment act together; the LP takes one load mode: the fast solver".to_string(),
-        ),
-        _ if elements > MAX_LP_ELEMENTS => (
-            Technique::Fast,
-            format!("about {elements} contact elements > {MAX_LP_ELEMENTS}, the dense LP's limit: the fast solver"),
-        ),
-        _ => (
-            Technique::LpForce,
-            format!("about {elements} contact elements <= {MAX_LP_ELEMENTS}: the modified LP (exact for its discretisation, seed 002)"),
-        ),
     }
 }
 

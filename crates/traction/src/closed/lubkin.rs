@@ -109,7 +109,16 @@ impl Lubkin {
     /// Moment at gross slip, $M(0) = 3\pi\mu P a/16$ (FORMULAS.md G).
     #[must_use]
     pub fn gross_slip_moment(&self) -> f64 {
-        3.0 * PI * self.friction * self.normal * self.a / 16.0
+        Self::gross_slip_moment_of(self.a, self.normal, self.friction)
+    }
+
+    /// The torsional capacity of a Hertz circle of radius `a` under normal load `normal`
+    /// with friction coefficient `friction`, $M(0) = 3\pi\mu P a/16$ (FORMULAS.md G): a
+    /// larger moment spins the contact. Needs no solver, so a caller can check a load
+    /// before building one.
+    #[must_use]
+    pub fn gross_slip_moment_of(a: f64, normal: f64, friction: f64) -> f64 {
+        3.0 * PI * friction * normal * a / 16.0
     }
 
     /// The twisting moment for stick radius $c$ (FORMULAS.md G), $k_t = \sqrt{1-t^2/a^2}$:

@@ -1,0 +1,255 @@
+//! Execution: a [`Plan`] run stage by stage.
+//!
+//! [`execute`] follows the plan's [`Recipe`] and decides nothing again. Each stage is a
+//! small module that reads what earlier stages produced:
+//!
+//! | recipe | stages (files of `exec/`), in order |
+//! |---|---|
+//! | [`Recipe::Line`] | `normal` (2D) → `friction` (2D traction) → `surface` → `field` |
+//! | [`Recipe::Rolling`] | `rolling` (normal and tangential together) |
+//! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) → `cycle` |
+//!
+//! Every stage increments the evaluation counter of the effects it computes
+//! ([`Evaluations`]), so a test can prove that an effect that is off costs nothing. Adding a
+//! capability is a plan variant and a stage module, not a branch in a dispatcher.
+
+// Scene errors carry file, position, key and hint; they are built on cold paths.
+#![allow(clippy::result_large_err)]
+
+mod cycle;
+mod field;
+mod friction;
+mod grid;
+mod lattice;
+mod normal;
+pub(crate) mod outcome;
+mod rolling;
+mod surface;
+mod twist;
+
+use std::time::Instant;
+
+use crate::error::{ErrorKind, SceneError};
+use crate::plan::{Plan, Recipe};
+use outcome::{
+    ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, Outcome, Progress, RigidOut,
+    RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
+};
+
+/// A physics routine failed on inputs the planner accepted.
+pub(crate) fn solver_err(what: &str, e: impl std::fmt::Display) -> SceneError {
+    SceneError::new(ErrorKind::Solver, format!("{what} failed: {e}")).hint(
+        "the inputs passed validation, so this is an extreme case the solver cannot handle; \
+         please report it with the scene",
+    )
+}
+
+/// What the stages share: counters, notes, progress, and the solver report.
+pub(crate) struct Ctx<'a> {
+    pub ev: Evaluations,
+    pub notes: Vec<String>,
+    opts: RunOptions<'a>,
+    pub iterations: usize,
+    pub inner_iterations: usize,
+    pub residual: f64,
+    pub elements: usize,
+    pub solve_seconds: f64,
+}
+
+impl Ctx<'_> {
+    pub fn progress(&self, stage: &'static str, done: usize, total: usize) {
+        if let Some(p) = self.opts.progress {
+            p(Progress { stage, done, total });
+        }
+    }
+}
+
+/// The parts of an [`Outcome`] the stages produce.
+pub(crate) struct Parts {
+    pub contact: ContactOut,
+    pub zones: Zones,
+    pub forces: Forces,
+    pub rigid: RigidOut,
+    pub surface: SurfaceOut,
+    pub field: FieldOut,
+    pub rolling: Option<RollingOut>,
+    pub cycle: Option<CycleOut>,
+}
+
+/// Points `lo..=hi`, evenly spaced; the midpoint when `n == 1`.
+pub(crate) fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![0.5 * (lo + hi)];
+    }
+    (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect()
+}
+
+/// Run `plan`, stage by stage, as planned.
+///
+/// # Errors
+/// A [`SceneError`] of kind [`ErrorKind::Solver`] (or [`ErrorKind::Impossible`] for a load a
+/// grid solver finds beyond the friction capacity) when a physics routine fails, or when the
+/// result has a non-finite value.
+pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
+    let t0 = Instant::now();
+    let mut cx = Ctx {
+        ev: Evaluations::default(),
+        notes: plan
+            .notes
+            .iter()
+            .cloned()
+            .chain(plan.grid_solver.as_ref().map(|g| format!("grid solver: {g}")))
+            .collect(),
+        opts: *opts,
+        iterations: 0,
+        inner_iterations: 0,
+        residual: 0.0,
+        elements: 0,
+        solve_seconds: 0.0,
+    };
+    let parts = match &plan.recipe {
+        Recipe::Line(r) => line(r, &mut cx),
+        Recipe::Rolling(r) => rolling::run(r, &mut cx),
+        Recipe::Contact(r) => contact(r, &mut cx),
+    }
+    .map_err(|e| e.in_file(plan.file.clone()))?;
+    let mut effects =
+        EffectsOut { on: Vec::new(), off: Default::default(), methods: Default::default() };
+    let mut methods = Vec::new();
+    for e in &plan.effects {
+        if e.on {
+            effects.on.push(e.effect.name().to_string());
+            if let Some(t) = e.technique {
+                effects.methods.insert(e.effect.name().to_string(), t.describe().to_string());
+                let tag = format!("{t:?}");
+                if !methods.contains(&tag) {
+                    methods.push(tag);
+                }
+            }
+        } else {
+            effects.off.insert(e.effect.name().to_string(), e.reason.clone());
+        }
+    }
+    let out = Outcome {
+        title: plan.title.clone(),
+        effects,
+        contact: parts.contact,
+        zones: parts.zones,
+        forces: parts.forces,
+        rigid_displacement: parts.rigid,
+        surface: parts.surface,
+        field: parts.field,
+        solver: SolverOut {
+            method: methods.join(" + "),
+            iterations: cx.iterations,
+            inner_iterations: cx.inner_iterations,
+            residual: cx.residual,
+            elements: cx.elements,
+            solve_seconds: cx.solve_seconds,
+            seconds: t0.elapsed().as_secs_f64(),
+        },
+        rolling: parts.rolling,
+        cycle: parts.cycle,
+        evaluations: cx.ev,
+        notes: cx.notes,
+        units: "SI",
+    };
+    if let Some(path) = out.first_non_finite() {
+        return Err(SceneError::new(
+            ErrorKind::Solver,
+            format!("the solution has a non-finite value at {path}"),
+        )
+        .hint("the scene is beyond what the solvers handle in f64; please report it")
+        .in_file(plan.file.clone()));
+    }
+    let bad = [out.contact.a, out.contact.b, out.contact.p0, out.contact.normal_load]
+        .iter()
+        .chain([out.forces.tangential, out.forces.moment, out.forces.rolling_moment].iter())
+        .any(|v| !v.is_finite());
+    if bad {
+        return Err(SceneError::new(ErrorKind::Solver, "the contact solution is not finite")
+            .hint("the scene is beyond what the solvers handle in f64; please report it")
+            .in_file(plan.file.clone()));
+    }
+    Ok(out)
+}
+
+/// A static line contact: normal → traction → surface → field.
+fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneError> {
+    let n = normal::line(&r.normal, r.friction_coefficient, cx)?;
+    let t = friction::line(r.friction, &n)?;
+    let (surface, rigid) = surface::line(r.surface, &n, &t, cx)?;
+    let field = field::line(r.field.as_ref(), &n, &t, cx)?;
+    Ok(Parts {
+        contact: ContactOut {
+            a: n.a,
+            b: n.a,
+            p0: n.p0,
+            indentation: n.indentation,
+            normal_load: n.load,
+        },
+        zones: t.zones(n.a, r.friction.is_some(), n.friction_possible),
+        forces: Forces {
+            normal: n.load,
+            tangential: t.tangential,
+            moment: 0.0,
+            rolling_moment: 0.0,
+        },
+        rigid: RigidOut { tangential: rigid, rotation: None, per_body: None },
+        surface,
+        field,
+        rolling: None,
+        cycle: None,
+    })
+}
+
+/// A static 3D contact: normal on the lattice → the tangential step → the cycle.
+fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneError> {
+    use crate::plan::recipe::Tangential;
+    let n = normal::contact(r, cx)?;
+    let mut lat = n.lattice.clone();
+    let t = match r.tangential {
+        None => friction::none(&mut lat, r.friction),
+        Some(Tangential::Sliding { angle }) => {
+            friction::sliding(&mut lat, r.friction, n.load, angle, cx)
+        }
+        Some(Tangential::Mindlin { force }) => friction::mindlin(&mut lat, r, &n, force, cx)?,
+        Some(Tangential::Cattaneo { force, along_x }) => {
+            friction::cattaneo(&mut lat, r, &n, force, along_x, cx)?
+        }
+        Some(Tangential::Lubkin { moment }) => twist::lubkin(&mut lat, r, &n, moment, cx)?,
+        Some(Tangential::Lp(mode)) => grid::lp(&mut lat, r, &n, mode, cx)?,
+        Some(Tangential::Fast { force, direction, moment, tolerance }) => {
+            grid::fast(&mut lat, r, &n, force, direction, moment, tolerance, cx)?
+        }
+    };
+    let cycle = match r.cycle {
+        Some(c) => Some(cycle::run(c, r, &n, cx)?),
+        None => None,
+    };
+    Ok(Parts {
+        contact: ContactOut {
+            a: n.ax,
+            b: n.ay,
+            p0: n.p0,
+            indentation: n.indentation,
+            normal_load: n.load,
+        },
+        zones: t.zones,
+        forces: Forces {
+            normal: n.load,
+            tangential: t.tangential,
+            moment: t.moment,
+            rolling_moment: 0.0,
+        },
+        rigid: t.rigid,
+        surface: if r.lattice_output {
+            lat.into_surface()
+        } else {
+            lattice::Lattice::empty().into_surface()
+        },
+        field: FieldOut::default(),
+        rolling: None,
+        cycle,
+    })
+}

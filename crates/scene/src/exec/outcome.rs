@@ -1,0 +1,337 @@
+//! The result of a run: the types result.json serialises, with the keys of the scene
+//! format reference (docs/SCENES.md), and the run's options and instrumentation.
+
+use serde::Serialize;
+use stickslip_traction::ElementState;
+
+use crate::plan::Effect;
+
+/// Progress of a run, reported to [`RunOptions::progress`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Progress {
+    /// What is being computed.
+    pub stage: &'static str,
+    /// Units done.
+    pub done: usize,
+    /// Units in this stage.
+    pub total: usize,
+}
+
+/// Options of [`crate::run`].
+#[derive(Clone, Copy, Default)]
+pub struct RunOptions<'a> {
+    /// Called as the run progresses (stage, done, total); the CLI draws a progress bar.
+    pub progress: Option<&'a (dyn Fn(Progress) + Sync)>,
+}
+
+impl std::fmt::Debug for RunOptions<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RunOptions").field("progress", &self.progress.is_some()).finish()
+    }
+}
+
+/// Evaluations made per effect (instrumentation): each counter is incremented where the
+/// effect's physics is actually evaluated (one per traction, displacement, stress point,
+/// root solve or loop point).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct Evaluations {
+    /// Normal-contact solves and pressure evaluations.
+    pub normal_contact: u64,
+    /// Tangential traction evaluations and friction solves.
+    pub friction: u64,
+    /// Graded-kernel integrals (surface displacement or stress points on a graded body).
+    pub grading: u64,
+    /// Viscoelastic solves and stress quadratures.
+    pub viscoelasticity: u64,
+    /// Rolling solves and rolling traction evaluations.
+    pub rolling: u64,
+    /// Twist solves and twist traction evaluations.
+    pub twist: u64,
+    /// Hysteresis-loop points.
+    pub hysteresis: u64,
+    /// Subsurface stress points.
+    pub subsurface_field: u64,
+}
+
+impl Evaluations {
+    /// The counter of `effect`.
+    pub fn get(&self, effect: Effect) -> u64 {
+        match effect {
+            Effect::NormalContact => self.normal_contact,
+            Effect::Friction => self.friction,
+            Effect::Grading => self.grading,
+            Effect::Viscoelasticity => self.viscoelasticity,
+            Effect::Rolling => self.rolling,
+            Effect::Twist => self.twist,
+            Effect::Hysteresis => self.hysteresis,
+            Effect::SubsurfaceField => self.subsurface_field,
+        }
+    }
+}
+
+/// `effects` in result.json.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct EffectsOut {
+    /// Effects that are on.
+    pub on: Vec<String>,
+    /// Effects that are off, with the reason.
+    pub off: std::collections::BTreeMap<String, String>,
+    /// Technique per effect that is on.
+    pub methods: std::collections::BTreeMap<String, String>,
+}
+
+/// `contact` in result.json.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ContactOut {
+    /// 2D: trailing half-width (x from -a); 3D: semi-axis along x (m).
+    pub a: f64,
+    /// 2D: leading half-width (x to b); 3D: semi-axis along y (m).
+    pub b: f64,
+    /// Peak pressure (Pa).
+    pub p0: f64,
+    /// Indentation (m) where an absolute one exists (graded k > 0: eq 16; 3D Hertz: the
+    /// approach of distant points), else null.
+    pub indentation: Option<f64>,
+    /// Normal load (N/m in 2D, N in 3D).
+    pub normal_load: f64,
+}
+
+/// `zones` in result.json.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Zones {
+    /// Stick intervals.
+    pub stick: Vec<[f64; 2]>,
+    /// Slip intervals.
+    pub slip: Vec<[f64; 2]>,
+    /// What the intervals are measured along: "x", "radius", "x along the load", or "grid"
+    /// (3D grid solutions: the counts are in `grid`, the map in `surface.stick`).
+    pub coordinate: &'static str,
+    /// Element counts of a grid solution (the LP or the fast solver); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid: Option<GridZones>,
+}
+
+/// Stick and slip element counts of a grid solution.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GridZones {
+    /// Elements that stick.
+    pub stick: usize,
+    /// Elements that slip.
+    pub slip: usize,
+    /// Stick area over contact area (equal elements: stick / (stick + slip)).
+    pub stick_area_fraction: f64,
+}
+
+impl GridZones {
+    pub(crate) fn from_states(states: &[ElementState]) -> Self {
+        let stick = states.iter().filter(|s| **s == ElementState::Stick).count();
+        let slip = states.len() - stick;
+        let stick_area_fraction =
+            if states.is_empty() { 0.0 } else { stick as f64 / states.len() as f64 };
+        GridZones { stick, slip, stick_area_fraction }
+    }
+}
+
+/// `forces` in result.json.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Forces {
+    /// Normal force.
+    pub normal: f64,
+    /// Tangential force (signed, along `load.direction_deg`).
+    pub tangential: f64,
+    /// Twisting moment.
+    pub moment: f64,
+    /// Rolling-friction moment.
+    pub rolling_moment: f64,
+}
+
+/// `rigid_displacement` in result.json.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RigidOut {
+    /// Tangential rigid-body displacement of the stick zone (m): relative (two bodies) in
+    /// 3D; in 2D on a graded substrate the absolute u_x of the stick zone; null where none is
+    /// defined.
+    pub tangential: Option<f64>,
+    /// Rigid rotation of the stick zone (rad, relative), twist only.
+    pub rotation: Option<f64>,
+    /// Per-body shares [substrate, indenter] of the tangential displacement or rotation.
+    pub per_body: Option<[f64; 2]>,
+}
+
+/// `surface` in result.json: along x (2D) or on a grid (3D).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum SurfaceOut {
+    /// 2D arrays along x.
+    Line {
+        /// Positions (m).
+        x: Vec<f64>,
+        /// Pressure (Pa).
+        p: Vec<f64>,
+        /// Shear traction on the substrate, +x (Pa).
+        q: Vec<f64>,
+        /// Tangential surface displacement of the substrate (m); empty if not computed.
+        ux: Vec<f64>,
+        /// Normal surface displacement of the substrate, positive into it (m).
+        uy: Vec<f64>,
+        /// What the displacements are measured from.
+        datum: String,
+    },
+    /// 3D lattice: `p[i][j]` at (`x[i]`, `y[j]`).
+    Grid {
+        /// Lattice x (m).
+        x: Vec<f64>,
+        /// Lattice y (m).
+        y: Vec<f64>,
+        /// Pressure (Pa), 0 outside the contact.
+        p: Vec<Vec<f64>>,
+        /// Traction along x (Pa).
+        qx: Vec<Vec<f64>>,
+        /// Traction along y (Pa).
+        qy: Vec<Vec<f64>>,
+        /// 1 stick, 0 slip, -1 outside the contact.
+        stick: Vec<Vec<i8>>,
+    },
+}
+
+/// `field` in result.json: `sxx[j][i]` at (`x[i]`, depth `y[j]`), compressive negative.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct FieldOut {
+    /// x (m).
+    pub x: Vec<f64>,
+    /// Depth y (m).
+    pub y: Vec<f64>,
+    /// sigma_xx (Pa).
+    pub sxx: Vec<Vec<f64>>,
+    /// sigma_yy (Pa).
+    pub syy: Vec<Vec<f64>>,
+    /// sigma_xy (Pa).
+    pub sxy: Vec<Vec<f64>>,
+}
+
+/// `solver` in result.json.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SolverOut {
+    /// The techniques used (per effect), joined.
+    pub method: String,
+    /// Iterations (LP pivots, fast-solver Newton steps, root-solver iterations), 0 for
+    /// closed forms.
+    pub iterations: usize,
+    /// Inner iterations: conjugate-gradient iterations summed over the fast solver's Newton
+    /// steps; 0 otherwise.
+    pub inner_iterations: usize,
+    /// Residual of the last iterative solve, 0 for closed forms (the fast solver: relative
+    /// complementarity residual $\lVert\mathbf r\rVert/\lVert\mathbf q\rVert$; the LP:
+    /// the load in excess of the friction capacity).
+    pub residual: f64,
+    /// Elements of the grid solver (LP or fast), 0 when none ran.
+    pub elements: usize,
+    /// Wall time of the grid solver including its set-up (s), 0 when none ran.
+    pub solve_seconds: f64,
+    /// Wall time of the run (s).
+    pub seconds: f64,
+}
+
+/// `rolling` in result.json (FORMULAS.md D notation).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[allow(non_snake_case)]
+pub struct RollingOut {
+    /// Contact length l = a + b (m).
+    pub l: f64,
+    /// Shift of the contact centre d = (b - a)/2 (m).
+    pub d: f64,
+    /// Stick length m = b - c (m).
+    pub m: f64,
+    /// Start of the stick zone c (m).
+    pub c: f64,
+    /// Eq 25's constant (null for a homogeneous body, where no alpha exists).
+    pub C2: Option<f64>,
+    /// Tangential force Q (N/m).
+    pub Q: f64,
+    /// Pressure moment M1 (N).
+    pub M1: f64,
+    /// Rolling-friction moment M* = M1 + QR (N).
+    pub Mstar: f64,
+    /// "stick-slip", "full slip" or "full stick".
+    pub regime: &'static str,
+    /// "viscoelastic" or "elastic (alpha = beta, Carter)" or "elastic (Carter)".
+    pub response: &'static str,
+}
+
+/// `cycle` in result.json: the Mindlin–Deresiewicz loop.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CycleOut {
+    /// Amplitude T* (N).
+    pub amplitude: f64,
+    /// Tangential load along the loop (N).
+    pub t: Vec<f64>,
+    /// Relative tangential displacement of the two bodies (m).
+    pub delta: Vec<f64>,
+    /// Energy dissipated per cycle, per body [substrate, indenter] (J).
+    pub energy_per_cycle: [f64; 2],
+}
+
+/// The result of a run; serialises to result.json with the keys of docs/SCENES.md.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Outcome {
+    /// Scene title.
+    pub title: String,
+    /// Effects on and off.
+    pub effects: EffectsOut,
+    /// Contact size and load.
+    pub contact: ContactOut,
+    /// Stick and slip zones.
+    pub zones: Zones,
+    /// Resultant forces.
+    pub forces: Forces,
+    /// Rigid-body displacement.
+    pub rigid_displacement: RigidOut,
+    /// Surface arrays.
+    pub surface: SurfaceOut,
+    /// Subsurface stresses (empty arrays when off).
+    pub field: FieldOut,
+    /// Solver information.
+    pub solver: SolverOut,
+    /// Rolling results, when rolling.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rolling: Option<RollingOut>,
+    /// Loading cycle, when asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cycle: Option<CycleOut>,
+    /// Evaluations per effect.
+    pub evaluations: Evaluations,
+    /// Modelling notes.
+    pub notes: Vec<String>,
+    /// Always "SI".
+    pub units: &'static str,
+}
+
+impl Outcome {
+    /// result.json text.
+    pub fn to_json(&self) -> String {
+        // Serialising plain structs of numbers and strings cannot fail.
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The first non-finite number, if any (a run never returns one: see [`crate::run`]).
+    pub(crate) fn first_non_finite(&self) -> Option<String> {
+        let v = serde_json::to_value(self).ok()?;
+        fn walk(v: &serde_json::Value, path: &str) -> Option<String> {
+            match v {
+                // serde_json writes NaN and infinities as null; real nulls are the
+                // Option fields, which are listed here so they are not flagged.
+                serde_json::Value::Array(a) => {
+                    a.iter().enumerate().find_map(|(i, x)| walk(x, &format!("{path}[{i}]")))
+                }
+                serde_json::Value::Object(o) => {
+                    o.iter().find_map(|(k, x)| walk(x, &format!("{path}.{k}")))
+                }
+                serde_json::Value::Null if path.contains("surface") || path.contains("field") => {
+                    Some(path.to_string())
+                }
+                _ => None,
+            }
+        }
+        walk(&v, "")
+    }
+}

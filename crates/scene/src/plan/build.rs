@@ -1,0 +1,591 @@
+//! The planner's decisions: the recipe (which method serves each stage), the effects with
+//! their reasons, the notes. Refusals come first ([`super::checks`]), the cost estimate
+//! last ([`super::cost`]).
+
+use std::f64::consts::PI;
+
+use stickslip_graded::{Accuracy, GradedMaterial};
+use stickslip_halfspace::hertz::HertzSphere;
+use stickslip_halfspace::material::composite_modulus;
+use stickslip_halfspace::Material;
+use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
+
+use super::checks::{self, invalid, tolerance_for, GRADED_TOLERANCE_RANGE};
+use super::cost::{self, lattice_elements};
+use super::recipe::{
+    ContactNormal, ContactRecipe, CycleRecipe, Force, LineDisplacements, LineField,
+    LineFieldMethod, LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface, LpMode, Recipe,
+    RollingModel, RollingRecipe, Tangential,
+};
+use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
+use crate::error::ErrorKind;
+use crate::scene::{
+    Elastic, Ellipse, Geometry, Indenter, Method, Motion, NormalLoad, Patch, Scene, Substrate,
+};
+
+/// Plan `scene`: refuse what no solver handles, choose the method of every stage, explain
+/// each effect, estimate the cost.
+pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
+    checks::refuse(scene)?;
+    let mut notes = Vec::new();
+    let visco = visco(scene);
+    let rolling = matches!(scene.motion, Motion::Rolling { .. });
+    if visco == Some(false) && !rolling {
+        notes.push("alpha = beta: the standard solid is elastic with modulus E; solved as a homogeneous elastic body".to_string());
+    }
+    let (recipe, grid_reason) = match (&scene.geometry, scene.motion) {
+        (Geometry::Cylinder { radius }, Motion::Rolling { speed, creep }) => {
+            (Recipe::Rolling(rolling_recipe(scene, *radius, speed, creep)?), None)
+        }
+        (Geometry::Cylinder { radius }, Motion::Static) => {
+            (Recipe::Line(line_recipe(scene, LineBody::Cylinder(*radius))?), None)
+        }
+        (Geometry::Punch { half_width }, Motion::Static) => {
+            (Recipe::Line(line_recipe(scene, LineBody::Punch(*half_width))?), None)
+        }
+        (_, Motion::Rolling { .. }) => {
+            return Err(checks::unsupported(
+                "geometry.kind",
+                "rolling needs a cylinder",
+                "use geometry.kind = \"cylinder\"",
+            ))
+        }
+        (Geometry::Sphere { radius }, Motion::Static) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Sphere(*radius))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+        (Geometry::Ellipsoid(e), Motion::Static) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Ellipsoid(*e))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+        (Geometry::Patches(ps), Motion::Static) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Patches(ps))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+    };
+    let effects = effects(scene, &recipe, &mut notes);
+    let grid_solver = match &recipe {
+        Recipe::Contact(ContactRecipe {
+            tangential: Some(Tangential::Lp(_) | Tangential::Fast { .. }),
+            ..
+        }) => grid_reason,
+        _ => None,
+    };
+    let (surface_points, grid_elements, cost) = cost::estimate(scene, &effects)?;
+    checks::capacity(scene)?;
+    Ok(Plan {
+        title: scene.title.clone(),
+        file: scene.file.clone(),
+        effects,
+        surface_points,
+        grid_elements,
+        grid_solver,
+        cost,
+        notes,
+        recipe,
+    })
+}
+
+/// Whether the substrate is viscoelastic: `Some(true)` when alpha != beta, `Some(false)`
+/// when the standard solid is elastic (alpha = beta), `None` for other substrates.
+fn visco(scene: &Scene) -> Option<bool> {
+    match scene.substrate {
+        Substrate::Viscoelastic { alpha, beta, .. } => Some(alpha != beta),
+        _ => None,
+    }
+}
+
+fn graded_k(scene: &Scene) -> Option<f64> {
+    match scene.substrate {
+        Substrate::Graded { k, .. } => Some(k),
+        _ => None,
+    }
+}
+
+fn elastic(e: Elastic, key: &'static str) -> Result<Material, Issue> {
+    Material::new(e.e, e.nu).map_err(|er| invalid(key, er))
+}
+
+/// The substrate as a homogeneous material (graded k = 0: E = e0; viscoelastic: the
+/// long-time E).
+pub(crate) fn substrate_material(s: &Substrate) -> Result<Material, Issue> {
+    match *s {
+        Substrate::Homogeneous(e) => elastic(e, "substrate.e"),
+        Substrate::Graded { e0, nu, .. } => elastic(Elastic { e: e0, nu }, "substrate.e0"),
+        Substrate::Viscoelastic { elastic: e, .. } => elastic(e, "substrate.e"),
+    }
+}
+
+pub(crate) fn indenter_material(scene: &Scene, sub: &Material) -> Result<Material, Issue> {
+    match scene.indenter {
+        Indenter::Rigid => Ok(Material::rigid()),
+        Indenter::Same => Ok(*sub),
+        Indenter::Homogeneous(e) => elastic(e, "indenter.e"),
+    }
+}
+
+pub(crate) fn identical_materials(scene: &Scene) -> bool {
+    match (scene.indenter, scene.substrate) {
+        (Indenter::Same, _) => true,
+        (Indenter::Homogeneous(i), Substrate::Homogeneous(s)) => i == s,
+        (Indenter::Homogeneous(i), Substrate::Viscoelastic { elastic, .. }) => i == elastic,
+        _ => false,
+    }
+}
+
+/// Whether an ellipse load direction lies along one of the axes (the Cattaneo closed form).
+pub(crate) fn along_axis(deg: f64) -> bool {
+    let r = deg.rem_euclid(90.0);
+    r.min(90.0 - r) < 1e-9
+}
+
+fn half_width_refused() -> Issue {
+    Issue {
+        kind: ErrorKind::Schema,
+        key: "load.half_width",
+        message: "this geometry takes the normal load, not a half-width".to_string(),
+        hint: "give load.normal = P".to_string(),
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// 2D static
+
+/// The body of a line contact.
+#[derive(Clone, Copy)]
+enum LineBody {
+    /// A cylinder of this radius (m).
+    Cylinder(f64),
+    /// A flat punch of this half-width (m).
+    Punch(f64),
+}
+
+fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
+    let l = &scene.load;
+    let k = graded_k(scene);
+    let grading = k.is_some_and(|k| k > 0.0);
+    let sub = substrate_material(&scene.substrate)?;
+    let line_load = match l.normal {
+        NormalLoad::HalfWidth(a) => LineLoad::HalfWidth(a),
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) => LineLoad::Force(p),
+    };
+    let graded_material = match scene.substrate {
+        Substrate::Graded { e0, k, nu } if k > 0.0 => {
+            Some(GradedMaterial::new(e0, k, nu).map_err(|e| invalid("substrate.k", e))?)
+        }
+        _ => None,
+    };
+    let normal = match (body, graded_material) {
+        (LineBody::Punch(half_width), _) => match line_load {
+            LineLoad::Force(force) => LineNormal::Punch { half_width, force },
+            LineLoad::HalfWidth(_) => return Err(half_width_refused()),
+        },
+        (LineBody::Cylinder(radius), Some(material)) => {
+            LineNormal::Graded { radius, load: line_load, material }
+        }
+        (LineBody::Cylinder(radius), None) => LineNormal::Hertz {
+            radius,
+            load: line_load,
+            substrate: sub,
+            indenter: indenter_material(scene, &sub)?,
+        },
+    };
+    let f = l.friction;
+    let friction = if f > 0.0 && (l.tangential != 0.0 || l.sliding) {
+        Some(if l.sliding {
+            LineFriction::Sliding { friction: f }
+        } else if grading {
+            LineFriction::GradedPartialSlip { friction: f, tangential: l.tangential }
+        } else {
+            LineFriction::Cattaneo { friction: f, tangential: l.tangential }
+        })
+    } else {
+        None
+    };
+    let field = match scene.outputs.field {
+        Some(grid) => {
+            let punch = matches!(normal, LineNormal::Punch { .. });
+            let method = if grading || punch || scene.solver.method == Method::Quadrature {
+                let material = match (normal, graded_material) {
+                    (_, Some(m)) => m,
+                    _ => GradedMaterial::new(sub.youngs_modulus(), 0.0, sub.poisson_ratio())
+                        .map_err(|e| invalid("substrate.e", e))?,
+                };
+                LineFieldMethod::Quadrature { material, accuracy: graded_accuracy(scene)? }
+            } else {
+                LineFieldMethod::McEwen
+            };
+            Some(LineField { grid, method })
+        }
+        None => None,
+    };
+    let surface = if scene.outputs.surface {
+        let displacements = match normal {
+            LineNormal::Hertz { substrate, .. } => LineDisplacements::Homogeneous { substrate },
+            LineNormal::Graded { material, .. } => {
+                LineDisplacements::Graded { material, accuracy: graded_accuracy(scene)? }
+            }
+            LineNormal::Punch { .. } => LineDisplacements::None,
+        };
+        Some(LineSurface { points: SURFACE_POINTS, displacements })
+    } else {
+        None
+    };
+    Ok(LineRecipe { normal, friction_coefficient: f, friction, surface, field })
+}
+
+fn graded_accuracy(scene: &Scene) -> Result<Accuracy, Issue> {
+    let t = tolerance_for(scene, "the graded-kernel quadrature", GRADED_TOLERANCE_RANGE)?;
+    Accuracy::new(t).map_err(|e| invalid("solver.tolerance", e))
+}
+
+// ---------------------------------------------------------------------------------------
+// rolling
+
+fn rolling_recipe(
+    scene: &Scene,
+    radius: f64,
+    speed: f64,
+    creep: f64,
+) -> Result<RollingRecipe, Issue> {
+    let NormalLoad::Force(load) = scene.load.normal else {
+        return Err(checks::unsupported(
+            "load.half_width",
+            "rolling takes the normal load; the contact length follows from it",
+            "give load.normal = P (N/m)",
+        ));
+    };
+    let friction = scene.load.friction;
+    let model = match scene.substrate {
+        Substrate::Viscoelastic { elastic: el, alpha, beta } => {
+            let tol = tolerance_for(scene, "the rolling stress quadrature", (1e-14, 1e-3))?;
+            let params = GoryachevaParams::new(
+                el.e, el.nu, radius, load, friction, creep, alpha, beta, speed,
+            )
+            .map_err(|e| invalid("substrate", e))?;
+            RollingModel::Goryacheva {
+                params,
+                stress: StressConfig {
+                    tol: stickslip_rolling::Tolerance { abs: 0.0, rel: tol },
+                    max_subdivisions: 200,
+                },
+                viscoelastic: alpha != beta,
+            }
+        }
+        Substrate::Homogeneous(el) => RollingModel::Carter(
+            CarterParams::new(el.e, el.nu, radius, load, friction, creep)
+                .map_err(|e| invalid("substrate", e))?,
+        ),
+        Substrate::Graded { .. } => {
+            return Err(checks::unsupported(
+                "motion.kind",
+                "rolling is solved for homogeneous (Carter) and viscoelastic (Goryacheva) bodies, not graded ones",
+                "use motion.kind = \"static\", or a homogeneous / viscoelastic substrate",
+            ))
+        }
+    };
+    Ok(RollingRecipe { model, surface_points: scene.outputs.surface.then_some(SURFACE_POINTS) })
+}
+
+// ---------------------------------------------------------------------------------------
+// 3D static
+
+/// The grid solver for 3D partial slip without a closed form, and why: what
+/// `solver.method` asks for, or under `"auto"` the modified LP up to
+/// [`super::MAX_LP_ELEMENTS`] contact elements (exact for its discretisation, seed 002) and
+/// the fast solver beyond it or when a force and a moment act together (the LP takes one
+/// load mode). True for the fast solver.
+fn grid_solver(method: Method, elements: usize, both: bool) -> (bool, String) {
+    use super::MAX_LP_ELEMENTS;
+    match method {
+        Method::Lp => (false, "solver.method = \"lp\"".to_string()),
+        Method::Fast => (true, "solver.method = \"fast\"".to_string()),
+        _ if both => (
+            true,
+            "a tangential force and a twisting moment act together; the LP takes one load mode: the fast solver".to_string(),
+        ),
+        _ if elements > MAX_LP_ELEMENTS => (
+            true,
+            format!("about {elements} contact elements > {MAX_LP_ELEMENTS}, the dense LP's limit: the fast solver"),
+        ),
+        _ => (
+            false,
+            format!("about {elements} contact elements <= {MAX_LP_ELEMENTS}: the modified LP (exact for its discretisation, seed 002)"),
+        ),
+    }
+}
+
+/// The body of a 3D contact.
+#[derive(Clone, Copy)]
+enum ContactBody<'a> {
+    Sphere(f64),
+    Ellipsoid(Ellipse),
+    Patches(&'a [Patch]),
+}
+
+fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe, String), Issue> {
+    let l = &scene.load;
+    let sub = substrate_material(&scene.substrate)?;
+    let ind = indenter_material(scene, &sub)?;
+    let e_star = composite_modulus(&sub, &ind);
+    let force_of = || match l.normal {
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) => Ok(p),
+        NormalLoad::HalfWidth(_) => Err(half_width_refused()),
+    };
+    let normal = match body {
+        ContactBody::Sphere(radius) => {
+            let force = match l.normal {
+                NormalLoad::Force(p) | NormalLoad::FromPatches(p) => p,
+                NormalLoad::HalfWidth(a) => HertzSphere::load_for_contact_radius(a, radius, e_star),
+            };
+            ContactNormal::Sphere { radius, force, e_star }
+        }
+        ContactBody::Ellipsoid(Ellipse::Radii { rx, ry }) => {
+            ContactNormal::Ellipse { rx, ry, force: force_of()?, e_star }
+        }
+        ContactBody::Ellipsoid(Ellipse::SemiAxes { a, b }) => {
+            ContactNormal::EllipseGiven { a, b, force: force_of()? }
+        }
+        ContactBody::Patches(ps) => ContactNormal::Patches(ps.to_vec()),
+    };
+    let method = scene.solver.method;
+    let both = l.tangential != 0.0 && l.moment != 0.0;
+    let elements = lattice_elements(scene);
+    let (fast, grid_reason) = grid_solver(method, elements, both);
+    let closed_ok = !matches!(method, Method::Lp | Method::Fast);
+    let force = {
+        let angle = l.direction_deg.to_radians();
+        let (direction, magnitude) =
+            if l.tangential < 0.0 { (angle + PI, -l.tangential) } else { (angle, l.tangential) };
+        Force { signed: l.tangential, magnitude, direction }
+    };
+    let f = l.friction;
+    let direction_all = force.direction;
+    let fast_step = |force: Option<Force>, moment: Option<f64>| -> Result<Tangential, Issue> {
+        Ok(Tangential::Fast {
+            force,
+            direction: direction_all,
+            moment,
+            tolerance: tolerance_for(scene, "the fast solver", (1e-14, 1e-1))?,
+        })
+    };
+    let tangential = if f > 0.0 && (l.tangential != 0.0 || l.sliding || l.moment != 0.0) {
+        Some(if l.sliding {
+            Tangential::Sliding { angle: l.direction_deg.to_radians() }
+        } else if l.tangential == 0.0 {
+            // a moment alone
+            match body {
+                ContactBody::Sphere(_) if closed_ok => Tangential::Lubkin { moment: l.moment },
+                _ if fast => fast_step(None, Some(l.moment))?,
+                _ => Tangential::Lp(LpMode::Moment(l.moment)),
+            }
+        } else {
+            match body {
+                ContactBody::Sphere(_) if closed_ok && !both => Tangential::Mindlin { force },
+                ContactBody::Ellipsoid(_) if closed_ok && !both && along_axis(l.direction_deg) => {
+                    // along x when the direction is within 45 degrees of the x axis
+                    let d = l.direction_deg.rem_euclid(180.0);
+                    Tangential::Cattaneo { force, along_x: d.min(180.0 - d) < 45.0 }
+                }
+                _ if fast => fast_step(Some(force), (l.moment != 0.0).then_some(l.moment))?,
+                _ => Tangential::Lp(LpMode::Force(force)),
+            }
+        })
+    } else {
+        None
+    };
+    let lattice_output = scene.outputs.surface
+        || matches!(tangential, Some(Tangential::Lp(_) | Tangential::Fast { .. }));
+    let cycle =
+        scene.outputs.cycle.map(|c| CycleRecipe { amplitude: c.amplitude, points: c.points });
+    Ok((
+        ContactRecipe {
+            normal,
+            bodies: [sub, ind],
+            identical: identical_materials(scene),
+            grid: scene.solver.grid,
+            friction: f,
+            tangential,
+            cycle,
+            lattice_output,
+        },
+        grid_reason,
+    ))
+}
+
+// ---------------------------------------------------------------------------------------
+// effects
+
+impl Recipe {
+    /// The technique of the normal-contact stage.
+    pub fn normal_technique(&self) -> Technique {
+        match self {
+            Recipe::Line(r) => match r.normal {
+                LineNormal::Hertz { .. } => Technique::HertzLine,
+                LineNormal::Graded { .. } => Technique::GradedCylinder,
+                LineNormal::Punch { .. } => Technique::FlatPunch,
+            },
+            Recipe::Rolling(r) => r.model.technique(),
+            Recipe::Contact(r) => match r.normal {
+                ContactNormal::Sphere { .. } => Technique::HertzSphere,
+                ContactNormal::Ellipse { .. } => Technique::HertzEllipse,
+                ContactNormal::EllipseGiven { .. } => Technique::EllipseGiven,
+                ContactNormal::Patches(_) => Technique::PatchPressure,
+            },
+        }
+    }
+
+    /// The technique of the friction stage, when there is one.
+    pub fn friction_technique(&self) -> Option<Technique> {
+        match self {
+            Recipe::Line(r) => r.friction.map(|f| match f {
+                LineFriction::Sliding { .. } => Technique::Sliding,
+                LineFriction::Cattaneo { .. } => Technique::Cattaneo2d,
+                LineFriction::GradedPartialSlip { .. } => Technique::GradedPartialSlip,
+            }),
+            Recipe::Rolling(r) => Some(r.model.technique()),
+            Recipe::Contact(r) => r.tangential.map(|t| t.technique()),
+        }
+    }
+}
+
+impl RollingModel {
+    /// Carter or Goryacheva.
+    pub fn technique(&self) -> Technique {
+        match self {
+            RollingModel::Carter(_) => Technique::Carter,
+            RollingModel::Goryacheva { viscoelastic: true, .. } => Technique::Goryacheva,
+            // alpha = beta is solved by Goryacheva's equations, reported as Carter's case
+            RollingModel::Goryacheva { viscoelastic: false, .. } => Technique::Carter,
+        }
+    }
+}
+
+impl Tangential {
+    /// The technique of this step.
+    pub fn technique(&self) -> Technique {
+        match self {
+            Tangential::Sliding { .. } => Technique::Sliding,
+            Tangential::Mindlin { .. } => Technique::Mindlin,
+            Tangential::Cattaneo { .. } => Technique::Cattaneo,
+            Tangential::Lubkin { .. } => Technique::Lubkin,
+            Tangential::Lp(LpMode::Force(_)) => Technique::LpForce,
+            Tangential::Lp(LpMode::Moment(_)) => Technique::LpMoment,
+            Tangential::Fast { .. } => Technique::Fast,
+        }
+    }
+}
+
+fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<EffectPlan> {
+    use Effect as E;
+    let l = &scene.load;
+    let on = |effect, reason: String, t: Technique| EffectPlan {
+        effect,
+        on: true,
+        reason,
+        technique: Some(t),
+    };
+    let off = |effect, reason: String| EffectPlan { effect, on: false, reason, technique: None };
+    let mut effects: Vec<EffectPlan> = Vec::with_capacity(8);
+    effects.push(on(E::NormalContact, "always".to_string(), recipe.normal_technique()));
+
+    let rolling = matches!(scene.motion, Motion::Rolling { .. });
+    let f = l.friction;
+    let friction_cause = if l.tangential != 0.0 {
+        Some("a tangential load")
+    } else if l.sliding {
+        Some("sliding = true")
+    } else if l.moment != 0.0 {
+        Some("a twisting moment")
+    } else if rolling {
+        Some("rolling")
+    } else {
+        None
+    };
+    match (recipe.friction_technique(), friction_cause) {
+        (Some(t), Some(cause)) => {
+            if t == Technique::Cattaneo2d && !identical_materials(scene) {
+                notes.push("2D Cattaneo-Mindlin neglects the coupling of normal and tangential tractions; exact for identical materials only (Dundurs beta = 0)".to_string());
+            }
+            if t == Technique::GradedPartialSlip {
+                notes.push("graded partial slip: the stick zone is where the q-induced u_x is uniform; the pressure-induced odd part of u_x (FORMULAS.md A5) is neglected, as in Cattaneo-Mindlin".to_string());
+            }
+            if matches!(t, Technique::Mindlin | Technique::Cattaneo | Technique::Lubkin)
+                && !identical_materials(scene)
+            {
+                notes.push("Mindlin/Cattaneo/Lubkin neglect normal-tangential coupling (exact for identical materials)".to_string());
+            }
+            effects.push(on(E::Friction, format!("f = {f} > 0 with {cause}"), t));
+        }
+        _ if f > 0.0 => effects.push(off(
+            E::Friction,
+            format!("f = {f} but no tangential load, sliding, moment or rolling: nothing for friction to carry"),
+        )),
+        _ => effects.push(off(E::Friction, "friction coefficient is 0".to_string())),
+    }
+
+    match graded_k(scene) {
+        Some(k) if k > 0.0 => effects.push(on(
+            E::Grading,
+            format!("graded substrate with k = {k}"),
+            Technique::GradedKernels,
+        )),
+        Some(_) => effects.push(off(
+            E::Grading,
+            "graded substrate with k = 0 is homogeneous: solved as a homogeneous half-plane"
+                .to_string(),
+        )),
+        None => effects.push(off(E::Grading, "substrate is not graded".to_string())),
+    }
+
+    match (visco(scene), scene.substrate) {
+        (Some(true), Substrate::Viscoelastic { alpha, beta, .. }) => effects.push(on(
+            E::Viscoelasticity,
+            format!("standard solid with alpha = {alpha} s > beta = {beta} s"),
+            Technique::Goryacheva,
+        )),
+        (Some(false), _) => effects.push(off(
+            E::Viscoelasticity,
+            "alpha = beta: the standard solid is elastic; solved as elastic (Carter)".to_string(),
+        )),
+        _ => effects.push(off(E::Viscoelasticity, "no viscoelastic material".to_string())),
+    }
+
+    match (recipe, scene.motion) {
+        (Recipe::Rolling(r), Motion::Rolling { speed, creep }) => effects.push(on(
+            E::Rolling,
+            format!("rolling at w = {speed} m/s, creep {creep}"),
+            r.model.technique(),
+        )),
+        _ => effects.push(off(E::Rolling, "motion is static".to_string())),
+    }
+
+    match (recipe, l.moment != 0.0) {
+        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true) => {
+            effects.push(on(E::Twist, format!("moment M = {} N m", l.moment), t.technique()))
+        }
+        _ => effects.push(off(E::Twist, "no twisting moment".to_string())),
+    }
+
+    match scene.outputs.cycle {
+        Some(c) => effects.push(on(
+            E::Hysteresis,
+            format!("outputs.cycle with T*/(fP) = {}", c.amplitude),
+            Technique::Deresiewicz,
+        )),
+        None => effects.push(off(E::Hysteresis, "no outputs.cycle".to_string())),
+    }
+
+    match recipe {
+        Recipe::Line(LineRecipe { field: Some(field), .. }) => effects.push(on(
+            E::SubsurfaceField,
+            format!("outputs.field with {} x {} points", field.grid.x.2, field.grid.y.2),
+            match field.method {
+                LineFieldMethod::McEwen => Technique::McEwen,
+                LineFieldMethod::Quadrature { .. } => Technique::StressQuadrature,
+            },
+        )),
+        _ => effects.push(off(E::SubsurfaceField, "no outputs.field".to_string())),
+    }
+    effects
+}

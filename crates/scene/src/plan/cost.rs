@@ -1,0 +1,199 @@
+//! The cost estimate of a plan (evaluations, seconds, memory) and the refusals of grids
+//! too large for the machine.
+
+use super::checks::issue;
+use super::{Cost, Effect, EffectPlan, Issue, Technique, MAX_LP_ELEMENTS, SURFACE_POINTS};
+use crate::error::ErrorKind;
+use crate::scene::{Geometry, Scene, Substrate};
+
+/// Points along the surface, grid elements and the cost of `scene` with `effects`; a
+/// refusal when a grid needs more memory than a run may use.
+#[allow(clippy::too_many_lines)]
+pub(crate) fn estimate(
+    scene: &Scene,
+    effects: &[EffectPlan],
+) -> Result<(usize, usize, Cost), Issue> {
+    use Effect as E;
+    use Technique as T;
+    let two_d = scene.geometry.is_2d();
+    let grading = matches!(scene.substrate, Substrate::Graded { k, .. } if k > 0.0);
+    let visco = match scene.substrate {
+        Substrate::Viscoelastic { alpha, beta, .. } => Some(alpha != beta),
+        _ => None,
+    };
+    let elements = if two_d { 0 } else { lattice_elements(scene) };
+    let surface_points = if two_d && scene.outputs.surface { SURFACE_POINTS } else { 0 };
+    let grid_elements = elements;
+    let lp = effects.iter().any(|e| matches!(e.technique, Some(T::LpForce | T::LpMoment)));
+    let fast = effects.iter().any(|e| e.technique == Some(T::Fast));
+    if lp && grid_elements > MAX_LP_ELEMENTS {
+        return Err(issue(
+            ErrorKind::OutOfRange,
+            "solver.grid",
+            format!("the dense LP on about {grid_elements} elements needs about {} of memory and minutes of pivoting", human_bytes(lp_memory(grid_elements))),
+            format!("use a grid with at most {MAX_LP_ELEMENTS} contact elements (solver.grid about {} for a circle), or method = \"fast\"", ((MAX_LP_ELEMENTS as f64) / std::f64::consts::FRAC_PI_4).sqrt() as usize),
+        ));
+    }
+    let cells = if two_d { 0 } else { lattice_cells(scene) };
+    // Memory of the 3D lattice arrays (result, JSON and CSV text) and of the fast solver.
+    let grid_memory = cells as u64 * OUTPUT_BYTES_PER_CELL
+        + if fast { fast_memory(cells, grid_elements) } else { 0 };
+    if grid_memory > MEMORY_LIMIT_BYTES {
+        let side = scene.solver.grid;
+        let max_side =
+            (side as f64 * (MEMORY_LIMIT_BYTES as f64 / grid_memory as f64).sqrt()) as usize;
+        return Err(issue(
+            ErrorKind::OutOfRange,
+            "solver.grid",
+            format!(
+                "grid = {side} gives a lattice of {cells} cells ({grid_elements} contact elements) needing about {} of memory, more than the {} a run may use",
+                human_bytes(grid_memory),
+                human_bytes(MEMORY_LIMIT_BYTES)
+            ),
+            format!("use solver.grid <= {max_side} for this scene"),
+        ));
+    }
+    let mut evals: u64 = 1;
+    let mut secs = 1e-5;
+    let mut mem: u64 = 1 << 20;
+    if surface_points > 0 {
+        let per = if grading {
+            800
+        } else if visco == Some(true) {
+            600
+        } else {
+            4
+        };
+        evals += (surface_points * per) as u64;
+        secs += (surface_points * per) as f64 * 2e-8;
+    }
+    if let Some(fg) = scene.outputs.field {
+        let n = (fg.x.2 * fg.y.2) as u64;
+        let per = if effects[E::SubsurfaceField.index()].technique == Some(T::StressQuadrature) {
+            1200
+        } else {
+            6
+        };
+        evals += n * per;
+        secs += (n * per) as f64 * 2.5e-8;
+        mem += n * 64;
+    }
+    if grid_elements > 0 {
+        let n = grid_elements as u64;
+        evals += n;
+        if lp {
+            evals += n * n * 4;
+            secs += (n * n) as f64 * 2e-7 + (n * n * n) as f64 * 2e-9;
+            mem += lp_memory(grid_elements);
+        } else if fast {
+            // Each Newton step takes tens of CG iterations, one FFT product each; the count
+            // grows slowly with the grid (measured: see fast_seconds).
+            evals += n * FAST_PRODUCTS;
+            secs += fast_seconds(cells);
+        } else if effects[E::Twist.index()].technique == Some(T::Lubkin) {
+            evals += n * 200;
+            secs += n as f64 * 4e-6;
+        }
+    }
+    if let Some(c) = scene.outputs.cycle {
+        evals += 2 * c.points as u64 + 1;
+    }
+    Ok((
+        surface_points,
+        grid_elements,
+        Cost { evaluations: evals, seconds: secs, memory_bytes: mem + grid_memory },
+    ))
+}
+
+/// The most memory a run may plan for: two thirds of a 24 GiB machine, leaving room for the
+/// operating system and for the error of the estimate. With the fast solver this admits
+/// grids up to about 5100 per side (about 12 GB at the measured rate) and refuses larger ones.
+pub const MEMORY_LIMIT_BYTES: u64 = 16 << 30;
+
+/// Result arrays per lattice cell of a 3D run: p, qx, qy and the stick flag in the result,
+/// their JSON tree for the finiteness check and the pretty JSON and CSV text.
+///
+/// Calibration (peak resident memory of `stickslip run --out` on the Mindlin sphere with the
+/// fast solver): 36 MB at grid 256, 129 MB at 512, 498 MB at 1024, i.e. 475 bytes per
+/// lattice cell in all. This constant and those of [`fast_memory`] add up to about 1.4
+/// times that, so the refusal errs on the safe side.
+const OUTPUT_BYTES_PER_CELL: u64 = 250;
+
+/// FFT products of a fast solve, roughly (for the evaluation count).
+const FAST_PRODUCTS: u64 = 300;
+
+/// Working memory of the fast solver for a lattice of `cells` cells with `elements` contact
+/// elements: the padded FFT lattice has about 4 cells per lattice cell (each side at least
+/// 2n - 1, rounded up to a 5-smooth size), holding three real kernel spectra and the
+/// convolution scratch; the Newton and CG vectors are per element. Calibrated with
+/// [`OUTPUT_BYTES_PER_CELL`] on measured peak memory.
+fn fast_memory(cells: usize, elements: usize) -> u64 {
+    cells as u64 * 200 + elements as u64 * 250
+}
+
+/// Seconds of a fast solve on a lattice of `cells` cells: measured on the Mindlin sphere
+/// (T/(fP) = 2/3, 2 shared cores) 1.7 s at 256^2, 12 s at 512^2, 91 s at 1024^2, i.e. about
+/// $1.7\,(N/256^2)^{1.45}$ s (FFT products cost N log N, their count grows with the grid).
+fn fast_seconds(cells: usize) -> f64 {
+    1.7 * (cells as f64 / 65536.0).powf(1.45)
+}
+
+/// Lattice cells of a 3D scene: `grid` x `grid` over the bounding box of a circle or
+/// ellipse; for patches, cells of side (largest extent)/`grid` over their bounding box.
+pub(crate) fn lattice_cells(scene: &Scene) -> usize {
+    let n = scene.solver.grid;
+    match &scene.geometry {
+        Geometry::Patches(ps) => {
+            let (lo, hi) = crate::scene::patch_bounds(ps);
+            let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
+            let nx = ((hi[0] - lo[0]) / h).round().max(1.0) as usize;
+            let ny = ((hi[1] - lo[1]) / h).round().max(1.0) as usize;
+            nx * ny
+        }
+        _ => n * n,
+    }
+}
+
+fn lp_memory(n: usize) -> u64 {
+    // two projected n x n matrices plus the tableau (about 2n x 3n)
+    (8 * n * n * 8) as u64
+}
+
+/// Elements of the lattice a 3D scene is solved or sampled on.
+pub(crate) fn lattice_elements(scene: &Scene) -> usize {
+    let n = scene.solver.grid;
+    match &scene.geometry {
+        // elements whose centres lie inside the circle / ellipse of the bounding box
+        Geometry::Sphere { .. } | Geometry::Ellipsoid(_) => {
+            (std::f64::consts::FRAC_PI_4 * (n * n) as f64).round() as usize
+        }
+        Geometry::Patches(ps) => {
+            let (lo, hi) = crate::scene::patch_bounds(ps);
+            let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
+            let area: f64 = ps.iter().map(|p| p.shape.area()).sum();
+            (area / (h * h)).round() as usize
+        }
+        _ => 0,
+    }
+}
+
+pub(crate) fn human_seconds(s: f64) -> String {
+    if s < 1e-3 {
+        "under a millisecond".to_string()
+    } else if s < 1.0 {
+        format!("{:.0} ms", s * 1e3)
+    } else {
+        format!("{s:.1} s")
+    }
+}
+
+pub(crate) fn human_bytes(b: u64) -> String {
+    let b = b as f64;
+    if b < 1e6 {
+        format!("{:.0} kB", b / 1e3)
+    } else if b < 1e9 {
+        format!("{:.0} MB", b / 1e6)
+    } else {
+        format!("{:.1} GB", b / 1e9)
+    }
+}
