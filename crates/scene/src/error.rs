@@ -116,3 +116,25 @@ impl fmt::Display for SceneError {
 }
 
 impl std::error::Error for SceneError {}
+
+/// A refusal found by validation or the planner, before it is located in a file: the full
+/// dotted key to change, what is wrong, and a hint. [`crate::Scene::locate`] makes it a
+/// [`SceneError`].
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Issue {
+    pub kind: ErrorKind,
+    pub key: String,
+    pub message: String,
+    pub hint: String,
+}
+
+impl Issue {
+    pub(crate) fn new(kind: ErrorKind, key: &str, message: impl Into<String>) -> Self {
+        Issue { kind, key: key.to_string(), message: message.into(), hint: String::new() }
+    }
+
+    pub(crate) fn hint(mut self, hint: impl Into<String>) -> Self {
+        self.hint = hint.into();
+        self
+    }
+}

@@ -140,12 +140,12 @@ pub(crate) fn along_axis(deg: f64) -> bool {
 }
 
 fn half_width_refused() -> Issue {
-    Issue {
-        kind: ErrorKind::Schema,
-        key: "load.half_width",
-        message: "this geometry takes the normal load, not a half-width".to_string(),
-        hint: "give load.normal = P".to_string(),
-    }
+    Issue::new(
+        ErrorKind::Schema,
+        "load.half_width",
+        "this geometry takes the normal load, not a half-width",
+    )
+    .hint("give load.normal = P")
 }
 
 // ---------------------------------------------------------------------------------------

@@ -22,7 +22,7 @@ pub(crate) fn issue(
     message: impl Into<String>,
     hint: impl Into<String>,
 ) -> Issue {
-    Issue { kind, key, message: message.into(), hint: hint.into() }
+    Issue::new(kind, key, message).hint(hint)
 }
 
 pub(crate) fn unsupported(

@@ -33,7 +33,8 @@ pub mod recipe;
 pub use cost::MEMORY_LIMIT_BYTES;
 pub use recipe::Recipe;
 
-use crate::error::{ErrorKind, SceneError};
+pub(crate) use crate::error::Issue;
+use crate::error::SceneError;
 use crate::scene::Scene;
 use cost::{human_bytes, human_seconds};
 
@@ -327,15 +328,6 @@ pub const SURFACE_POINTS: usize = 201;
 /// about 0.5 GB and minutes of pivoting.
 pub const MAX_LP_ELEMENTS: usize = 3000;
 
-/// A refusal found by the planner: the key to change, what is wrong, and a hint.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Issue {
-    pub kind: ErrorKind,
-    pub key: &'static str,
-    pub message: String,
-    pub hint: String,
-}
-
 impl Plan {
     /// Plan `scene`.
     ///
@@ -344,9 +336,7 @@ impl Plan {
     /// [`Scene::from_toml_str`] has already passed this check (with line and column).
     #[allow(clippy::result_large_err)]
     pub fn new(scene: &Scene) -> Result<Plan, SceneError> {
-        build::build(scene).map_err(|i| {
-            SceneError::new(i.kind, i.message).key(i.key).hint(i.hint).in_file(scene.file.clone())
-        })
+        build::build(scene).map_err(|i| scene.locate(i))
     }
 
     /// Run this plan, stage by stage ([`crate::exec::execute`]).

@@ -1,0 +1,481 @@
+//! The validated scene: every quantity in SI, every value inside what the physics allows.
+
+// Scene errors are built on the cold path of parsing and carry the file, position, key and
+// hint for the user; boxing them would buy nothing measurable.
+#![allow(clippy::result_large_err)]
+
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+mod builder;
+mod read;
+pub(crate) mod validate;
+
+pub use builder::SceneBuilder;
+
+use crate::error::{ErrorKind, Issue, SceneError};
+
+/// Contact geometry: what touches what.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Geometry {
+    /// A cylinder of radius R on a half-plane (2D, plane strain; loads per unit length).
+    Cylinder {
+        /// Radius R (m).
+        radius: f64,
+    },
+    /// A sphere of radius R on a half-space.
+    Sphere {
+        /// Radius R (m).
+        radius: f64,
+    },
+    /// An elliptical Hertz contact.
+    Ellipsoid(Ellipse),
+    /// A flat rigid punch of half-width a (2D).
+    Punch {
+        /// Half-width (m).
+        half_width: f64,
+    },
+    /// Flat patches with given uniform pressures (3D), e.g. a bolted joint's contact areas.
+    Patches(Vec<Patch>),
+}
+
+impl Geometry {
+    /// True for plane-strain (per unit length) problems.
+    pub fn is_2d(&self) -> bool {
+        matches!(self, Geometry::Cylinder { .. } | Geometry::Punch { .. })
+    }
+}
+
+/// How an elliptical contact is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Ellipse {
+    /// The contact semi-axes a (along x) and b (along y), m.
+    SemiAxes {
+        /// Semi-axis along x (m).
+        a: f64,
+        /// Semi-axis along y (m).
+        b: f64,
+    },
+    /// The principal relative radii of curvature (m); the semi-axes follow from Hertz.
+    Radii {
+        /// Radius in the x-z plane (m).
+        rx: f64,
+        /// Radius in the y-z plane (m).
+        ry: f64,
+    },
+}
+
+/// A flat contact patch with uniform pressure.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Patch {
+    /// Its outline.
+    pub shape: PatchShape,
+    /// Centre (m).
+    pub centre: [f64; 2],
+    /// Uniform pressure (Pa), > 0.
+    pub pressure: f64,
+}
+
+/// Outline of a patch, centred on its `centre`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum PatchShape {
+    /// Axis-aligned square of this side (m).
+    Square {
+        /// Side (m).
+        side: f64,
+    },
+    /// Axis-aligned rectangle with sides along x and y (m).
+    Rectangle {
+        /// Sides along x and y (m).
+        sides: [f64; 2],
+    },
+    /// Circle of this radius (m).
+    Circle {
+        /// Radius (m).
+        radius: f64,
+    },
+}
+
+impl PatchShape {
+    /// Area (m^2).
+    pub fn area(&self) -> f64 {
+        match *self {
+            PatchShape::Square { side } => side * side,
+            PatchShape::Rectangle { sides } => sides[0] * sides[1],
+            PatchShape::Circle { radius } => std::f64::consts::PI * radius * radius,
+        }
+    }
+}
+
+impl Patch {
+    /// Normal force carried by the patch (N).
+    pub fn force(&self) -> f64 {
+        self.pressure * self.shape.area()
+    }
+
+    /// True when the two outlines share a region of positive area (touching edges do not
+    /// count: a split contact can have patches that abut).
+    pub fn overlaps(&self, other: &Patch) -> bool {
+        use PatchShape::*;
+        let half = |s: &PatchShape| match *s {
+            Square { side } => [side / 2.0; 2],
+            Rectangle { sides } => [sides[0] / 2.0, sides[1] / 2.0],
+            Circle { radius } => [radius; 2],
+        };
+        let d = [other.centre[0] - self.centre[0], other.centre[1] - self.centre[1]];
+        match (self.shape, other.shape) {
+            (Circle { radius: r1 }, Circle { radius: r2 }) => d[0].hypot(d[1]) < r1 + r2,
+            (Circle { radius }, rect) | (rect, Circle { radius }) => {
+                let (c_circle, c_rect) = if matches!(self.shape, Circle { .. }) {
+                    (self.centre, other.centre)
+                } else {
+                    (other.centre, self.centre)
+                };
+                let h = half(&rect);
+                let dx = (c_circle[0] - c_rect[0]).abs() - h[0];
+                let dy = (c_circle[1] - c_rect[1]).abs() - h[1];
+                let gap = dx.max(0.0).hypot(dy.max(0.0));
+                // inside the rectangle (both negative) or closer than the radius
+                (dx < 0.0 && dy < 0.0) || gap < radius
+            }
+            (a, b) => {
+                let (ha, hb) = (half(&a), half(&b));
+                d[0].abs() < ha[0] + hb[0] && d[1].abs() < ha[1] + hb[1]
+            }
+        }
+    }
+}
+
+/// Bounding box of the patches: (lower-left, upper-right).
+pub(crate) fn patch_bounds(ps: &[Patch]) -> ([f64; 2], [f64; 2]) {
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for p in ps {
+        let h = match p.shape {
+            PatchShape::Square { side } => [side / 2.0; 2],
+            PatchShape::Rectangle { sides } => [sides[0] / 2.0, sides[1] / 2.0],
+            PatchShape::Circle { radius } => [radius; 2],
+        };
+        for d in 0..2 {
+            lo[d] = lo[d].min(p.centre[d] - h[d]);
+            hi[d] = hi[d].max(p.centre[d] + h[d]);
+        }
+    }
+    (lo, hi)
+}
+
+/// An elastic material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Elastic {
+    /// Young's modulus (Pa).
+    pub e: f64,
+    /// Poisson's ratio, in (-1, 0.5].
+    pub nu: f64,
+}
+
+/// The body below.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Substrate {
+    /// Homogeneous, linear elastic.
+    Homogeneous(Elastic),
+    /// Power-law graded, E = e0 y^k (Giannakopoulos & Pallot 2000).
+    Graded {
+        /// E0 in Pa / m^k.
+        e0: f64,
+        /// Grading exponent, 0 <= k < 1.
+        k: f64,
+        /// Poisson's ratio, below 1/(1+k).
+        nu: f64,
+    },
+    /// Standard linear solid: eps + alpha eps' = (sigma + beta sigma') / E (Goryacheva 1973).
+    Viscoelastic {
+        /// Long-time modulus E (Pa) and Poisson's ratio.
+        elastic: Elastic,
+        /// Retardation time alpha (s).
+        alpha: f64,
+        /// Relaxation time beta (s), beta <= alpha.
+        beta: f64,
+    },
+}
+
+/// The body above.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Indenter {
+    /// Rigid.
+    Rigid,
+    /// Homogeneous elastic.
+    Homogeneous(Elastic),
+    /// The same material as the substrate.
+    Same,
+}
+
+/// How the normal load is prescribed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum NormalLoad {
+    /// The force P (N/m in 2D, N in 3D).
+    Force(f64),
+    /// The contact half-width a (m); the force follows.
+    HalfWidth(f64),
+    /// Given by the patches' pressures.
+    FromPatches(f64),
+}
+
+/// Loads and friction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Load {
+    /// Normal load.
+    pub normal: NormalLoad,
+    /// Tangential load T (N/m in 2D, N in 3D), along `direction_deg`.
+    pub tangential: f64,
+    /// Direction of T in degrees from +x.
+    pub direction_deg: f64,
+    /// Coulomb friction coefficient f >= 0.
+    pub friction: f64,
+    /// Full sliding: q = f p.
+    pub sliding: bool,
+    /// Twisting moment about the contact normal (N m, 3D).
+    pub moment: f64,
+}
+
+/// Motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Motion {
+    /// No motion beyond the applied loads.
+    Static,
+    /// Steady rolling.
+    Rolling {
+        /// Speed w (m/s), > 0.
+        speed: f64,
+        /// Creep delta = (omega R - w) / w.
+        creep: f64,
+    },
+}
+
+/// A subsurface grid, in units of `scale`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FieldGrid {
+    /// x from, to, count.
+    pub x: (f64, f64, usize),
+    /// depth y from, to, count (y > 0).
+    pub y: (f64, f64, usize),
+    /// Unit of x and y.
+    pub scale: FieldScale,
+}
+
+/// Unit of a field grid's coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum FieldScale {
+    /// The contact half-width a.
+    HalfWidth,
+    /// Metres.
+    Metres,
+}
+
+/// A Mindlin–Deresiewicz loading cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cycle {
+    /// Amplitude T*/(fP), in (0, 1].
+    pub amplitude: f64,
+    /// Points along the loop.
+    pub points: usize,
+}
+
+/// What to compute beyond the contact solution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outputs {
+    /// Surface arrays (p, q, displacements, zones).
+    pub surface: bool,
+    /// Subsurface stresses on a grid.
+    pub field: Option<FieldGrid>,
+    /// A loading cycle.
+    pub cycle: Option<Cycle>,
+    /// SVG plots beside the JSON.
+    pub plots: bool,
+}
+
+/// Which method the user asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Method {
+    /// Let the planner choose.
+    Auto,
+    /// Closed forms only.
+    ClosedForm,
+    /// Quadrature of the kernels.
+    Quadrature,
+    /// The modified LP (seed 002).
+    Lp,
+    /// The fast FFT solver.
+    Fast,
+}
+
+/// Solver options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverOptions {
+    /// Requested method.
+    pub method: Method,
+    /// Elements per side for grid solvers.
+    pub grid: usize,
+    /// Requested relative tolerance.
+    pub tolerance: f64,
+}
+
+/// A validated scene. Every quantity is SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// Title.
+    pub title: String,
+    /// Where it came from, for messages.
+    pub file: Option<PathBuf>,
+    /// Geometry.
+    pub geometry: Geometry,
+    /// The body below.
+    pub substrate: Substrate,
+    /// The body above.
+    pub indenter: Indenter,
+    /// Loads.
+    pub load: Load,
+    /// Motion.
+    pub motion: Motion,
+    /// Requested outputs.
+    pub outputs: Outputs,
+    /// Solver options.
+    pub solver: SolverOptions,
+    /// The text the scene was read from with the span of each value (None when built in
+    /// code); used to locate refusals.
+    pub source: Option<std::sync::Arc<Source>>,
+}
+
+/// The largest grid side the scene format accepts. Whether a grid fits is decided by the
+/// planner's memory estimate ([`crate::plan::MEMORY_LIMIT_BYTES`]): a 3D lattice costs
+/// about 650 bytes per cell with the fast solver (estimate), so grids of about 5100 per side
+/// and more are refused there; this bound only keeps the arithmetic far from overflow.
+pub const MAX_GRID: usize = 16384;
+
+/// The built-in default scene: the rigid roller of seed 000, Table 1 (FORMULAS.md A4).
+pub const DEFAULT_SCENE: &str = r#"title = "Rigid roller on a power-law graded substrate (seed 000, Table 1)"
+
+[geometry]
+kind = "cylinder"
+radius = "0.3 m"
+
+[substrate]
+model = "graded"
+e0 = "1767600 kgf/m^2.1"
+k = 0.1
+nu = 0.3
+
+[indenter]
+model = "rigid"
+
+[load]
+half_width = "0.0178 m"
+friction = 1.0
+sliding = true
+
+[outputs]
+surface = true
+field = { x = [-1.5, 1.5, 61], y = [0.02, 2.0, 40], scale = "a" }
+plots = true
+"#;
+
+/// Where a scene came from: its text and the span of every value under its dotted key, so
+/// that a refusal found after reading (validation, planning) names the line and column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Source {
+    text: std::sync::Arc<str>,
+    spans: std::collections::BTreeMap<String, Range<usize>>,
+}
+
+impl Source {
+    /// The span of `key`: the value itself, or (for a key not in the file, or an element of
+    /// a list) the nearest enclosing value or table that is.
+    fn span(&self, key: &str) -> Option<Range<usize>> {
+        let mut k = key;
+        loop {
+            if let Some(s) = self.spans.get(k) {
+                return Some(s.clone());
+            }
+            k = &k[..k.rfind(['.', '['])?];
+        }
+    }
+}
+
+impl Default for SolverOptions {
+    /// `auto`, 32 elements per side, relative tolerance 1e-10.
+    fn default() -> Self {
+        SolverOptions { method: Method::Auto, grid: 32, tolerance: 1e-10 }
+    }
+}
+
+impl Scene {
+    /// The built-in default scene (seed 000's Table 1 roller).
+    pub fn default_scene() -> Scene {
+        // The constant is tested to parse; a failure here is a bug in this crate.
+        Scene::from_toml_str(DEFAULT_SCENE, None).expect("the built-in default scene is valid")
+    }
+
+    /// Read and validate a scene file.
+    ///
+    /// # Errors
+    /// A [`SceneError`] with the file, line, column, key and a hint.
+    pub fn from_file(path: &Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            SceneError::new(ErrorKind::Io, format!("cannot read the scene file: {e}"))
+                .in_file(Some(path.to_path_buf()))
+                .hint("check the path; `stickslip run` without a file runs the built-in default scene")
+        })?;
+        Scene::from_toml_str(&text, Some(path.to_path_buf()))
+    }
+
+    /// Read a scene from TOML text and validate it, including the combinations the planner
+    /// refuses. `file` is used in error messages only.
+    ///
+    /// # Errors
+    /// A [`SceneError`] with the line, column, key and a hint.
+    pub fn from_toml_str(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError> {
+        let scene = read::read(src, file)?;
+        scene.checked()
+    }
+
+    /// A builder for a scene in code (SI values), validated by [`SceneBuilder::build`].
+    pub fn builder(geometry: Geometry, substrate: Substrate) -> SceneBuilder {
+        SceneBuilder::new(geometry, substrate)
+    }
+
+    /// Check every range and combination (the checks of `scene/validate.rs`), then the
+    /// planner's refusals, so that a scene that passes can be planned and run.
+    ///
+    /// # Errors
+    /// The first refusal, located in the source file when the scene came from one.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        validate::validate(self).map_err(|i| self.locate(i))?;
+        crate::plan::check(self).map_err(|i| self.locate(i))
+    }
+
+    fn checked(self) -> Result<Scene, SceneError> {
+        self.validate()?;
+        Ok(self)
+    }
+
+    /// A refusal as a [`SceneError`]: the key, and when the scene came from a file, the file,
+    /// line and column of the key's value (or of its table when the key is absent).
+    pub(crate) fn locate(&self, i: Issue) -> SceneError {
+        let mut e = SceneError::new(i.kind, i.message).key(i.key.clone());
+        if !i.hint.is_empty() {
+            e = e.hint(i.hint);
+        }
+        if let Some(src) = &self.source {
+            e = e.at(&src.text, src.span(&i.key));
+        }
+        e.in_file(self.file.clone())
+    }
+}

@@ -1,0 +1,532 @@
+//! The TOML reader: one way to build a [`Scene`] (the builder is another).
+//!
+//! It checks only what belongs to the text: TOML syntax, the keys each table takes, value
+//! types, names from a fixed list, units and their dimensions. It records the byte span of
+//! every value it reads under its dotted key ([`Source`]), so that validation and the
+//! planner, which know nothing of TOML, can still point at the line and column of the value
+//! they refuse.
+
+use std::cell::RefCell;
+use std::collections::BTreeMap;
+use std::ops::Range;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use toml::Spanned;
+
+use super::{
+    Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
+    NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Source, Substrate,
+};
+use crate::error::{ErrorKind, SceneError};
+use crate::raw::{Qty, RawScene, SQty};
+use crate::units::{parse_quantity, Dim};
+
+struct Reader<'a> {
+    src: &'a str,
+    file: Option<PathBuf>,
+    spans: RefCell<BTreeMap<String, Range<usize>>>,
+}
+
+impl Reader<'_> {
+    fn err(
+        &self,
+        kind: ErrorKind,
+        key: &str,
+        span: Option<Range<usize>>,
+        msg: impl Into<String>,
+    ) -> SceneError {
+        SceneError::new(kind, msg).key(key).at(self.src, span).in_file(self.file.clone())
+    }
+
+    fn record(&self, key: &str, span: Range<usize>) {
+        self.spans.borrow_mut().insert(key.to_string(), span);
+    }
+
+    /// A number (SI) or a string with a unit, in SI. Ranges are validation's business.
+    fn qty(&self, q: &SQty, key: &str, dim: Dim, name: &'static str) -> Result<f64, SceneError> {
+        self.record(key, q.span());
+        match q.get_ref() {
+            Qty::Num(v) => Ok(*v),
+            Qty::Text(t) => parse_quantity(t, dim, name).map_err(|e| {
+                self.err(ErrorKind::Unit, key, Some(q.span()), e.to_string()).hint(format!(
+                    "write a number in SI ({dim}) or a string like \"10 mm\", \"30e6 psi\""
+                ))
+            }),
+        }
+    }
+
+    fn num(&self, v: &Spanned<f64>, key: &str) -> f64 {
+        self.record(key, v.span());
+        *v.get_ref()
+    }
+
+    fn required<'b, T>(
+        &self,
+        v: &'b Option<T>,
+        key: &str,
+        table_span: Range<usize>,
+        what: &str,
+    ) -> Result<&'b T, SceneError> {
+        v.as_ref().ok_or_else(|| {
+            self.err(ErrorKind::Schema, key, Some(table_span), format!("missing key `{key}`"))
+                .hint(what.to_string())
+        })
+    }
+
+    fn choice<'s>(
+        &self,
+        s: &'s Spanned<String>,
+        key: &str,
+        allowed: &[&str],
+    ) -> Result<&'s str, SceneError> {
+        self.record(key, s.span());
+        let v = s.get_ref().as_str();
+        if allowed.contains(&v) {
+            Ok(v)
+        } else {
+            Err(self
+                .err(ErrorKind::Schema, key, Some(s.span()), format!("unknown value \"{v}\""))
+                .hint(format!("one of: {}", allowed.join(", "))))
+        }
+    }
+
+    /// Exactly two quantities, e.g. `[\"2 mm\", \"1 mm\"]`.
+    fn pair(
+        &self,
+        v: &Spanned<Vec<SQty>>,
+        key: &str,
+        dim: Dim,
+        name: &'static str,
+        hint: &str,
+    ) -> Result<[f64; 2], SceneError> {
+        self.record(key, v.span());
+        if v.get_ref().len() != 2 {
+            return Err(self
+                .err(
+                    ErrorKind::Schema,
+                    key,
+                    Some(v.span()),
+                    format!("expected 2 values, got {}", v.get_ref().len()),
+                )
+                .hint(hint.to_string()));
+        }
+        let a = self.qty(&v.get_ref()[0], key, dim, name)?;
+        let b = self.qty(&v.get_ref()[1], key, dim, name)?;
+        self.record(key, v.span());
+        Ok([a, b])
+    }
+}
+
+/// Read `src` (the text of `file`, if any) into a [`Scene`], not yet validated.
+pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError> {
+    let cx = Reader { src, file, spans: RefCell::new(BTreeMap::new()) };
+    let raw: RawScene = toml::from_str(src).map_err(|e| {
+        let msg = e.message().trim().to_string();
+        let kind = if msg.contains("unknown field")
+            || msg.contains("missing field")
+            || msg.contains("invalid type")
+            || msg.contains("did not match any variant")
+        {
+            ErrorKind::Schema
+        } else {
+            ErrorKind::Syntax
+        };
+        let hint = if kind == ErrorKind::Schema {
+            "see docs/SCENES.md for the keys each table takes; units go in strings, e.g. \"10 mm\""
+        } else {
+            "the file must be valid TOML (https://toml.io)"
+        };
+        SceneError::new(kind, msg).at(src, e.span()).in_file(cx.file.clone()).hint(hint)
+    })?;
+    let geometry = geometry(&cx, &raw)?;
+    let substrate = substrate(&cx, &raw)?;
+    let indenter = indenter(&cx, &raw)?;
+    let load = load(&cx, &raw, &geometry)?;
+    let motion = motion(&cx, &raw)?;
+    let outputs = outputs(&cx, raw.outputs.as_ref())?;
+    let solver = solver(&cx, raw.solver.as_ref())?;
+    cx.record("geometry", raw.geometry.span());
+    cx.record("substrate", raw.substrate.span());
+    cx.record("load", raw.load.span());
+    if let Some(i) = &raw.indenter {
+        cx.record("indenter", i.span());
+    }
+    if let Some(m) = &raw.motion {
+        cx.record("motion", m.span());
+    }
+    Ok(Scene {
+        title: raw.title.clone().unwrap_or_else(|| "untitled scene".to_string()),
+        file: cx.file.clone(),
+        geometry,
+        substrate,
+        indenter,
+        load,
+        motion,
+        outputs,
+        solver,
+        source: Some(Arc::new(Source { text: Arc::from(src), spans: cx.spans.into_inner() })),
+    })
+}
+
+fn geometry(cx: &Reader<'_>, raw: &RawScene) -> Result<Geometry, SceneError> {
+    let g = raw.geometry.get_ref();
+    let gspan = raw.geometry.span();
+    let kind = cx.choice(
+        &g.kind,
+        "geometry.kind",
+        &["cylinder", "sphere", "ellipsoid", "punch", "patches"],
+    )?;
+    Ok(match kind {
+        "cylinder" | "sphere" => {
+            let r = cx.required(
+                &g.radius,
+                "geometry.radius",
+                gspan,
+                "the radius R, e.g. radius = \"0.3 m\"",
+            )?;
+            let radius = cx.qty(r, "geometry.radius", Dim::LENGTH, "radius")?;
+            if kind == "cylinder" {
+                Geometry::Cylinder { radius }
+            } else {
+                Geometry::Sphere { radius }
+            }
+        }
+        "punch" => {
+            let h =
+                cx.required(&g.half_width, "geometry.half_width", gspan, "the punch half-width")?;
+            Geometry::Punch {
+                half_width: cx.qty(h, "geometry.half_width", Dim::LENGTH, "half-width")?,
+            }
+        }
+        "ellipsoid" => {
+            let hint = "two lengths, e.g. [\"2 mm\", \"1 mm\"]";
+            match (&g.semi_axes, &g.radii) {
+                (Some(s), None) => {
+                    let [a, b] = cx.pair(s, "geometry.semi_axes", Dim::LENGTH, "length", hint)?;
+                    Geometry::Ellipsoid(Ellipse::SemiAxes { a, b })
+                }
+                (None, Some(r)) => {
+                    let [rx, ry] = cx.pair(r, "geometry.radii", Dim::LENGTH, "length", hint)?;
+                    Geometry::Ellipsoid(Ellipse::Radii { rx, ry })
+                }
+                _ => {
+                    return Err(cx
+                        .err(ErrorKind::Schema, "geometry", Some(gspan), "an ellipsoid needs exactly one of `semi_axes` and `radii`")
+                        .hint("semi_axes = [a, b] for the contact, or radii = [Rx, Ry] for the bodies' relative radii"))
+                }
+            }
+        }
+        _ => {
+            let list = cx.required(&g.patches, "geometry.patches", gspan, "a list of patches")?;
+            cx.record("geometry.patches", list.span());
+            let mut patches: Vec<Patch> = Vec::new();
+            for (i, p) in list.get_ref().iter().enumerate() {
+                let key = format!("geometry.patches[{i}]");
+                cx.record(&key, p.span());
+                let pr = p.get_ref();
+                let shape_name = cx.choice(
+                    &pr.shape,
+                    &format!("{key}.shape"),
+                    &["square", "rectangle", "circle"],
+                )?;
+                let shape = match shape_name {
+                    "square" => {
+                        let k = format!("{key}.side");
+                        let s = cx.required(&pr.side, &k, p.span(), "the square's side")?;
+                        PatchShape::Square { side: cx.qty(s, &k, Dim::LENGTH, "side")? }
+                    }
+                    "rectangle" => {
+                        let k = format!("{key}.sides");
+                        let s =
+                            cx.required(&pr.sides, &k, p.span(), "sides = [along x, along y]")?;
+                        PatchShape::Rectangle {
+                            sides: cx.pair(
+                                s,
+                                &k,
+                                Dim::LENGTH,
+                                "side",
+                                "sides = [along x, along y]",
+                            )?,
+                        }
+                    }
+                    _ => {
+                        let k = format!("{key}.radius");
+                        let r = cx.required(&pr.radius, &k, p.span(), "the circle's radius")?;
+                        PatchShape::Circle { radius: cx.qty(r, &k, Dim::LENGTH, "radius")? }
+                    }
+                };
+                let ck = format!("{key}.centre");
+                let centre =
+                    cx.pair(&pr.centre, &ck, Dim::LENGTH, "length", "[x, y], two lengths")?;
+                let pressure =
+                    cx.qty(&pr.pressure, &format!("{key}.pressure"), Dim::STRESS, "pressure")?;
+                patches.push(Patch { shape, centre, pressure });
+            }
+            Geometry::Patches(patches)
+        }
+    })
+}
+
+fn substrate(cx: &Reader<'_>, raw: &RawScene) -> Result<Substrate, SceneError> {
+    let s = raw.substrate.get_ref();
+    let sspan = raw.substrate.span();
+    let model =
+        cx.choice(&s.model, "substrate.model", &["homogeneous", "graded", "viscoelastic"])?;
+    let nu = cx.num(&s.nu, "substrate.nu");
+    Ok(match model {
+        "homogeneous" => {
+            let e =
+                cx.required(&s.e, "substrate.e", sspan, "Young's modulus, e.g. e = \"210 GPa\"")?;
+            Substrate::Homogeneous(Elastic {
+                e: cx.qty(e, "substrate.e", Dim::STRESS, "modulus")?,
+                nu,
+            })
+        }
+        "graded" => {
+            let k = cx.required(
+                &s.k,
+                "substrate.k",
+                sspan.clone(),
+                "the grading exponent k in E = e0 y^k, 0 <= k < 1",
+            )?;
+            let kv = cx.num(k, "substrate.k");
+            let e0 = cx.required(
+                &s.e0,
+                "substrate.e0",
+                sspan,
+                "E0 of E = e0 y^k, e.g. e0 = \"1767600 kgf/m^2.1\"",
+            )?;
+            // The unit of e0 depends on k. With k outside [0, 1) e0 cannot be read; it is
+            // left NaN and validation refuses k, which it checks first.
+            let e0 = if kv.is_finite() && (0.0..1.0).contains(&kv) {
+                cx.qty(
+                    e0,
+                    "substrate.e0",
+                    Dim::graded_modulus(kv),
+                    "graded modulus (force/length^(2+k))",
+                )?
+            } else {
+                f64::NAN
+            };
+            Substrate::Graded { e0, k: kv, nu }
+        }
+        _ => {
+            let e = cx.required(&s.e, "substrate.e", sspan.clone(), "the long-time modulus E")?;
+            let e = cx.qty(e, "substrate.e", Dim::STRESS, "modulus")?;
+            let a = cx.required(
+                &s.alpha,
+                "substrate.alpha",
+                sspan.clone(),
+                "the retardation time alpha (s)",
+            )?;
+            let b =
+                cx.required(&s.beta, "substrate.beta", sspan, "the relaxation time beta (s)")?;
+            let alpha = cx.qty(a, "substrate.alpha", Dim::TIME, "time")?;
+            let beta = cx.qty(b, "substrate.beta", Dim::TIME, "time")?;
+            Substrate::Viscoelastic { elastic: Elastic { e, nu }, alpha, beta }
+        }
+    })
+}
+
+fn indenter(cx: &Reader<'_>, raw: &RawScene) -> Result<Indenter, SceneError> {
+    let Some(ind) = &raw.indenter else { return Ok(Indenter::Rigid) };
+    let i = ind.get_ref();
+    Ok(match cx.choice(&i.model, "indenter.model", &["rigid", "homogeneous", "same"])? {
+        "rigid" => Indenter::Rigid,
+        "same" => Indenter::Same,
+        _ => {
+            let e =
+                cx.required(&i.e, "indenter.e", ind.span(), "Young's modulus of the indenter")?;
+            let n =
+                cx.required(&i.nu, "indenter.nu", ind.span(), "Poisson's ratio of the indenter")?;
+            Indenter::Homogeneous(Elastic {
+                e: cx.qty(e, "indenter.e", Dim::STRESS, "modulus")?,
+                nu: cx.num(n, "indenter.nu"),
+            })
+        }
+    })
+}
+
+fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, SceneError> {
+    let (force_dim, force_name) = if geometry.is_2d() {
+        (Dim::FORCE_PER_LENGTH, "load per unit length")
+    } else {
+        (Dim::FORCE, "force")
+    };
+    let l = raw.load.get_ref();
+    let lspan = raw.load.span();
+    let normal = match (geometry, &l.normal, &l.half_width) {
+        (Geometry::Patches(p), None, None) => {
+            NormalLoad::FromPatches(p.iter().map(Patch::force).sum())
+        }
+        (Geometry::Patches(_), _, _) => {
+            return Err(cx
+                .err(
+                    ErrorKind::Schema,
+                    "load.normal",
+                    Some(lspan),
+                    "patches carry their own pressures; do not give load.normal or load.half_width",
+                )
+                .hint("remove load.normal / load.half_width"))
+        }
+        (_, Some(p), None) => NormalLoad::Force(cx.qty(p, "load.normal", force_dim, force_name)?),
+        (_, None, Some(a)) => {
+            NormalLoad::HalfWidth(cx.qty(a, "load.half_width", Dim::LENGTH, "half-width")?)
+        }
+        _ => return Err(cx
+            .err(
+                ErrorKind::Schema,
+                "load",
+                Some(lspan),
+                "give exactly one of `normal` and `half_width`",
+            )
+            .hint(
+                "normal = P (N/m in 2D, N in 3D), or half_width = a to prescribe the contact size",
+            )),
+    };
+    let tangential = match &l.tangential {
+        Some(t) => cx.qty(t, "load.tangential", force_dim, force_name)?,
+        None => 0.0,
+    };
+    let direction_deg = l.direction_deg.as_ref().map_or(0.0, |d| cx.num(d, "load.direction_deg"));
+    let friction = l.friction.as_ref().map_or(0.0, |f| cx.num(f, "load.friction"));
+    let moment = match &l.moment {
+        Some(m) => cx.qty(m, "load.moment", Dim::MOMENT, "moment")?,
+        None => 0.0,
+    };
+    Ok(Load {
+        normal,
+        tangential,
+        direction_deg,
+        friction,
+        sliding: l.sliding.unwrap_or(false),
+        moment,
+    })
+}
+
+fn motion(cx: &Reader<'_>, raw: &RawScene) -> Result<Motion, SceneError> {
+    let Some(m) = &raw.motion else { return Ok(Motion::Static) };
+    let mr = m.get_ref();
+    Ok(match cx.choice(&mr.kind, "motion.kind", &["static", "rolling"])? {
+        "static" => Motion::Static,
+        _ => {
+            let sp = cx.required(
+                &mr.speed,
+                "motion.speed",
+                m.span(),
+                "the rolling speed w, e.g. speed = \"10 cm/s\"",
+            )?;
+            let speed = cx.qty(sp, "motion.speed", Dim::SPEED, "speed")?;
+            let creep = mr.creep.as_ref().map_or(0.0, |c| cx.num(c, "motion.creep"));
+            Motion::Rolling { speed, creep }
+        }
+    })
+}
+
+fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Outputs, SceneError> {
+    let Some(o) = o else {
+        return Ok(Outputs { surface: true, field: None, cycle: None, plots: false });
+    };
+    let axis = |v: &Spanned<Vec<f64>>, key: &str| -> Result<(f64, f64, usize), SceneError> {
+        cx.record(key, v.span());
+        let a = v.get_ref();
+        let bad = |m: String| {
+            cx.err(ErrorKind::OutOfRange, key, Some(v.span()), m)
+                .hint("[from, to, count] with from < to and 2 <= count <= 10000 (depth from > 0)")
+        };
+        if a.len() != 3 {
+            return Err(bad(format!("expected [from, to, count], got {} values", a.len())));
+        }
+        let n = a[2];
+        // An integer count; its range is validation's.
+        if !(n.fract() == 0.0 && n >= 0.0 && n <= usize::MAX as f64) {
+            return Err(bad(format!("count {n} is not an integer in 2..=10000")));
+        }
+        Ok((a[0], a[1], n as usize))
+    };
+    let field = match &o.field {
+        None => None,
+        Some(f) => {
+            cx.record("outputs.field", f.span());
+            let fr = f.get_ref();
+            let scale = match &fr.scale {
+                None => FieldScale::HalfWidth,
+                Some(s) => match cx.choice(s, "outputs.field.scale", &["a", "m"])? {
+                    "a" => FieldScale::HalfWidth,
+                    _ => FieldScale::Metres,
+                },
+            };
+            Some(FieldGrid {
+                x: axis(&fr.x, "outputs.field.x")?,
+                y: axis(&fr.y, "outputs.field.y")?,
+                scale,
+            })
+        }
+    };
+    let cycle = match &o.cycle {
+        None => None,
+        Some(c) => {
+            cx.record("outputs.cycle", c.span());
+            let cr = c.get_ref();
+            let amplitude = cx.num(&cr.amplitude, "outputs.cycle.amplitude");
+            let points = match &cr.points {
+                None => 60,
+                Some(p) => {
+                    cx.record("outputs.cycle.points", p.span());
+                    let v = *p.get_ref();
+                    if v < 0 {
+                        return Err(cx
+                            .err(
+                                ErrorKind::OutOfRange,
+                                "outputs.cycle.points",
+                                Some(p.span()),
+                                format!("{v} points"),
+                            )
+                            .hint("4 <= points <= 100000"));
+                    }
+                    usize::try_from(v).unwrap_or(usize::MAX)
+                }
+            };
+            Some(Cycle { amplitude, points })
+        }
+    };
+    Ok(Outputs {
+        surface: o.surface.unwrap_or(true),
+        field,
+        cycle,
+        plots: o.plots.unwrap_or(false),
+    })
+}
+
+fn solver(cx: &Reader<'_>, s: Option<&crate::raw::RawSolver>) -> Result<SolverOptions, SceneError> {
+    let mut out = SolverOptions::default();
+    let Some(s) = s else { return Ok(out) };
+    if let Some(m) = &s.method {
+        out.method = match cx.choice(
+            m,
+            "solver.method",
+            &["auto", "closed-form", "quadrature", "lp", "fast"],
+        )? {
+            "auto" => Method::Auto,
+            "closed-form" => Method::ClosedForm,
+            "quadrature" => Method::Quadrature,
+            "lp" => Method::Lp,
+            _ => Method::Fast,
+        };
+    }
+    if let Some(g) = &s.grid {
+        cx.record("solver.grid", g.span());
+        let v = *g.get_ref();
+        if v < 0 {
+            return Err(cx
+                .err(ErrorKind::OutOfRange, "solver.grid", Some(g.span()), format!("grid = {v} elements per side is not allowed"))
+                .hint(format!("4 <= grid <= {}; grids whose working memory would exceed 16 GiB are refused by the planner (about 5100 per side for the fast solver)", super::MAX_GRID)));
+        }
+        out.grid = usize::try_from(v).unwrap_or(usize::MAX);
+    }
+    if let Some(t) = &s.tolerance {
+        out.tolerance = cx.num(t, "solver.tolerance");
+    }
+    Ok(out)
+}

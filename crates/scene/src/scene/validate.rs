@@ -1,0 +1,348 @@
+//! Validation of a typed [`Scene`]: every range and every combination a scene must satisfy
+//! before planning, in one place, whichever way the scene was built (TOML or the builder).
+//!
+//! Each refusal is an [`Issue`] naming the full dotted key (`geometry.patches[2].side`),
+//! what was found, what is allowed and a hint; [`Scene::locate`] turns it into a
+//! [`SceneError`](crate::SceneError) with the file, line and column when the scene came
+//! from a file. The checks run in the order of the scene format (geometry, substrate,
+//! indenter, load, motion, outputs, solver), so the first problem of a file is reported.
+
+use super::{
+    Cycle, Elastic, Ellipse, FieldGrid, Geometry, Indenter, Motion, NormalLoad, Outputs, Patch,
+    PatchShape, Scene, SolverOptions, Substrate, MAX_GRID,
+};
+use crate::error::{ErrorKind, Issue};
+
+/// Every check of `scene`; the first refusal.
+pub(crate) fn validate(scene: &Scene) -> Result<(), Issue> {
+    geometry(&scene.geometry)?;
+    substrate(&scene.substrate)?;
+    indenter(&scene.indenter)?;
+    load(scene)?;
+    motion(scene)?;
+    outputs(&scene.outputs)?;
+    solver(&scene.solver)
+}
+
+fn finite(key: &str, v: f64) -> Result<f64, Issue> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Issue::new(ErrorKind::OutOfRange, key, "must be a finite number")
+            .hint("a finite number (a string with a unit, e.g. \"10 mm\", or SI)"))
+    }
+}
+
+/// `v` finite and > 0; `name` says what it is ("radius", "modulus", ...).
+fn positive(key: &str, v: f64, name: &str) -> Result<f64, Issue> {
+    finite(key, v)?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(Issue::new(ErrorKind::OutOfRange, key, format!("{name} must be positive, got {v}"))
+            .hint(format!("give a {name} > 0")))
+    }
+}
+
+fn poisson(key: &str, nu: f64) -> Result<f64, Issue> {
+    if nu.is_finite() && nu > -1.0 && nu <= 0.5 {
+        Ok(nu)
+    } else {
+        Err(Issue::new(ErrorKind::OutOfRange, key, format!("Poisson's ratio {nu} is not allowed"))
+            .hint("an isotropic elastic solid has -1 < nu <= 0.5"))
+    }
+}
+
+fn geometry(g: &Geometry) -> Result<(), Issue> {
+    match g {
+        Geometry::Cylinder { radius } | Geometry::Sphere { radius } => {
+            positive("geometry.radius", *radius, "radius")?;
+        }
+        Geometry::Punch { half_width } => {
+            positive("geometry.half_width", *half_width, "half-width")?;
+        }
+        Geometry::Ellipsoid(Ellipse::SemiAxes { a, b }) => {
+            positive("geometry.semi_axes", *a, "length")?;
+            positive("geometry.semi_axes", *b, "length")?;
+        }
+        Geometry::Ellipsoid(Ellipse::Radii { rx, ry }) => {
+            positive("geometry.radii", *rx, "length")?;
+            positive("geometry.radii", *ry, "length")?;
+        }
+        Geometry::Patches(ps) => patches(ps)?,
+    }
+    Ok(())
+}
+
+fn patches(ps: &[Patch]) -> Result<(), Issue> {
+    if ps.is_empty() {
+        return Err(Issue::new(
+            ErrorKind::OutOfRange,
+            "geometry.patches",
+            "the patch list is empty",
+        )
+        .hint("give at least one patch"));
+    }
+    for (i, p) in ps.iter().enumerate() {
+        let key = format!("geometry.patches[{i}]");
+        match p.shape {
+            PatchShape::Square { side } => {
+                positive(&format!("{key}.side"), side, "side")?;
+            }
+            PatchShape::Rectangle { sides } => {
+                positive(&format!("{key}.sides"), sides[0], "side")?;
+                positive(&format!("{key}.sides"), sides[1], "side")?;
+            }
+            PatchShape::Circle { radius } => {
+                positive(&format!("{key}.radius"), radius, "radius")?;
+            }
+        }
+        finite(&format!("{key}.centre"), p.centre[0])?;
+        finite(&format!("{key}.centre"), p.centre[1])?;
+        let pk = format!("{key}.pressure");
+        finite(&pk, p.pressure)?;
+        if p.pressure <= 0.0 {
+            return Err(Issue::new(
+                ErrorKind::OutOfRange,
+                &pk,
+                format!("a patch with no compressive pressure ({} Pa) carries no load", p.pressure),
+            )
+            .hint("pressure > 0; leave the patch out if it is not in contact"));
+        }
+        if let Some(j) = ps[..i].iter().position(|q| q.overlaps(p)) {
+            return Err(Issue::new(
+                ErrorKind::Impossible,
+                &key,
+                format!("patch {i} overlaps patch {j}"),
+            )
+            .hint("patches must be disjoint (they may touch along an edge)"));
+        }
+    }
+    Ok(())
+}
+
+fn substrate(s: &Substrate) -> Result<(), Issue> {
+    match *s {
+        Substrate::Homogeneous(Elastic { e, nu }) => {
+            poisson("substrate.nu", nu)?;
+            positive("substrate.e", e, "modulus")?;
+        }
+        Substrate::Graded { e0, k, nu } => {
+            if !(k.is_finite() && (0.0..1.0).contains(&k)) {
+                return Err(Issue::new(
+                    ErrorKind::OutOfRange,
+                    "substrate.k",
+                    format!("grading exponent k = {k} is outside [0, 1)"),
+                )
+                .hint(
+                    "0 <= k < 1 (k = 1 is the Gibson soil, where the surface integrals diverge)",
+                ));
+            }
+            // beta^2 = (1+k)(1-(1+k)nu)/(1-nu) must be positive (FORMULAS.md A1); this more
+            // specific check comes before the isotropic range.
+            if nu >= 1.0 / (1.0 + k) {
+                return Err(Issue::new(
+                    ErrorKind::OutOfRange,
+                    "substrate.nu",
+                    format!("nu = {nu} with k = {k} makes beta imaginary"),
+                )
+                .hint(format!(
+                    "a graded substrate needs nu < 1/(1+k) = {:.6}, and -1 < nu <= 0.5 as any isotropic solid",
+                    1.0 / (1.0 + k)
+                )));
+            }
+            poisson("substrate.nu", nu)?;
+            positive("substrate.e0", e0, "graded modulus (force/length^(2+k))")?;
+        }
+        Substrate::Viscoelastic { elastic: Elastic { e, nu }, alpha, beta } => {
+            poisson("substrate.nu", nu)?;
+            positive("substrate.e", e, "modulus")?;
+            positive("substrate.alpha", alpha, "time")?;
+            positive("substrate.beta", beta, "time")?;
+            if alpha < beta {
+                return Err(Issue::new(
+                    ErrorKind::OutOfRange,
+                    "substrate.alpha",
+                    format!("alpha = {alpha} s is less than beta = {beta} s"),
+                )
+                .hint("the standard solid eps + alpha eps' = (sigma + beta sigma')/E dissipates only for alpha > beta; alpha = beta is elastic"));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn indenter(i: &Indenter) -> Result<(), Issue> {
+    if let Indenter::Homogeneous(Elastic { e, nu }) = *i {
+        positive("indenter.e", e, "modulus")?;
+        poisson("indenter.nu", nu)?;
+    }
+    Ok(())
+}
+
+fn load(scene: &Scene) -> Result<(), Issue> {
+    let l = &scene.load;
+    let two_d = scene.geometry.is_2d();
+    let force_name = if two_d { "load per unit length" } else { "force" };
+    match (&scene.geometry, l.normal) {
+        (Geometry::Patches(_), NormalLoad::FromPatches(_)) => {}
+        (Geometry::Patches(_), _) => {
+            return Err(Issue::new(
+                ErrorKind::Schema,
+                "load.normal",
+                "patches carry their own pressures; do not give load.normal or load.half_width",
+            )
+            .hint("remove load.normal / load.half_width"))
+        }
+        (_, NormalLoad::FromPatches(_)) => {
+            return Err(Issue::new(
+                ErrorKind::Schema,
+                "load.normal",
+                "only patches carry their own pressures; this geometry needs load.normal or load.half_width",
+            )
+            .hint("normal = P (N/m in 2D, N in 3D), or half_width = a"))
+        }
+        (_, NormalLoad::Force(p)) => {
+            positive("load.normal", p, force_name)?;
+        }
+        (_, NormalLoad::HalfWidth(a)) => {
+            positive("load.half_width", a, "half-width")?;
+        }
+    }
+    finite("load.tangential", l.tangential)?;
+    if !l.direction_deg.is_finite() {
+        return Err(Issue::new(
+            ErrorKind::OutOfRange,
+            "load.direction_deg",
+            format!("direction {} degrees is not a finite angle", l.direction_deg),
+        )
+        .hint("an angle in degrees from +x, e.g. direction_deg = 90"));
+    }
+    if !(l.friction.is_finite() && l.friction >= 0.0) {
+        return Err(Issue::new(
+            ErrorKind::OutOfRange,
+            "load.friction",
+            format!("friction coefficient {} is not allowed", l.friction),
+        )
+        .hint("a Coulomb coefficient f >= 0"));
+    }
+    finite("load.moment", l.moment)?;
+    if l.moment != 0.0 && two_d {
+        return Err(Issue::new(
+            ErrorKind::Impossible,
+            "load.moment",
+            "a twisting moment needs a 3D contact",
+        )
+        .hint("use geometry.kind = sphere, ellipsoid or patches"));
+    }
+    if l.sliding && l.tangential != 0.0 {
+        return Err(Issue::new(ErrorKind::Impossible, "load.tangential", "with sliding = true the shear is q = f p and the tangential load is f P; do not also give it")
+            .hint("remove load.tangential, or set sliding = false for partial slip"));
+    }
+    if l.tangential != 0.0 && l.friction == 0.0 {
+        return Err(Issue::new(
+            ErrorKind::Impossible,
+            "load.tangential",
+            "a tangential load on a frictionless contact cannot be carried",
+        )
+        .hint("give load.friction > 0"));
+    }
+    if let (NormalLoad::Force(p) | NormalLoad::FromPatches(p), false) = (l.normal, l.sliding) {
+        if l.tangential.abs() > l.friction * p {
+            return Err(Issue::new(
+                ErrorKind::Impossible,
+                "load.tangential",
+                format!(
+                    "|T| = {} exceeds f P = {} : the contact slides, partial slip is impossible",
+                    l.tangential.abs(),
+                    l.friction * p
+                ),
+            )
+            .hint("reduce T below f P, or set sliding = true"));
+        }
+    }
+    Ok(())
+}
+
+fn motion(scene: &Scene) -> Result<(), Issue> {
+    if let Motion::Rolling { speed, creep } = scene.motion {
+        positive("motion.speed", speed, "speed")?;
+        if !creep.is_finite() {
+            return Err(Issue::new(ErrorKind::OutOfRange, "motion.creep", "creep must be finite")
+                .hint("a finite creep ratio (omega R - w)/w, e.g. creep = 1e-3"));
+        }
+        if !scene.geometry.is_2d() {
+            return Err(Issue::new(
+                ErrorKind::Impossible,
+                "motion.kind",
+                "rolling is solved for cylinders (2D)",
+            )
+            .hint("use geometry.kind = \"cylinder\""));
+        }
+    }
+    Ok(())
+}
+
+/// The largest number of points along one axis of a field grid.
+pub const MAX_FIELD_POINTS: usize = 10_000;
+
+fn axis(key: &str, a: (f64, f64, usize), depth: bool) -> Result<(), Issue> {
+    let bad = |m: String| {
+        Issue::new(ErrorKind::OutOfRange, key, m)
+            .hint("[from, to, count] with from < to and 2 <= count <= 10000 (depth from > 0)")
+    };
+    let (lo, hi, n) = a;
+    if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+        return Err(bad(format!("need from < to, got {lo} .. {hi}")));
+    }
+    if depth && lo <= 0.0 {
+        return Err(bad(format!("depths must be below the surface (> 0), got {lo}")));
+    }
+    if !(2..=MAX_FIELD_POINTS).contains(&n) {
+        return Err(bad(format!("count {n} is not an integer in 2..=10000")));
+    }
+    Ok(())
+}
+
+fn outputs(o: &Outputs) -> Result<(), Issue> {
+    if let Some(FieldGrid { x, y, .. }) = o.field {
+        axis("outputs.field.x", x, false)?;
+        axis("outputs.field.y", y, true)?;
+    }
+    if let Some(Cycle { amplitude, points }) = o.cycle {
+        if !(amplitude > 0.0 && amplitude <= 1.0) {
+            return Err(Issue::new(
+                ErrorKind::OutOfRange,
+                "outputs.cycle.amplitude",
+                format!("amplitude T*/(fP) = {amplitude} is outside (0, 1]"),
+            )
+            .hint("0 < T*/(fP) <= 1"));
+        }
+        if !(4..=100_000).contains(&points) {
+            return Err(Issue::new(
+                ErrorKind::OutOfRange,
+                "outputs.cycle.points",
+                format!("{points} points"),
+            )
+            .hint("4 <= points <= 100000"));
+        }
+    }
+    Ok(())
+}
+
+fn solver(s: &SolverOptions) -> Result<(), Issue> {
+    if !(4..=MAX_GRID).contains(&s.grid) {
+        return Err(Issue::new(ErrorKind::OutOfRange, "solver.grid", format!("grid = {} elements per side is not allowed", s.grid))
+            .hint(format!("4 <= grid <= {MAX_GRID}; grids whose working memory would exceed 16 GiB are refused by the planner (about 5100 per side for the fast solver)")));
+    }
+    let t = s.tolerance;
+    if !(t.is_finite() && t > 0.0 && t < 1.0) {
+        return Err(Issue::new(
+            ErrorKind::OutOfRange,
+            "solver.tolerance",
+            format!("tolerance {t} is not allowed"),
+        )
+        .hint("a relative tolerance in (0, 1), e.g. 1e-10"));
+    }
+    Ok(())
+}
