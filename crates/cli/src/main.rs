@@ -1,9 +1,9 @@
 //! The `stickslip` command-line program.
 //!
 //! - `stickslip run [SCENE] [--out DIR] [--json]`: run a scene (the built-in default scene,
-//!   seed 000's Table 1 roller, when none is given) through `stickslip_scene::run`, the one
-//!   code path the library offers; write result.json, CSV and SVG plots into DIR, or print the
-//!   JSON with `--json`.
+//!   seed 000's Table 1 roller, when none is given): plan it (`Plan::new`, the plan `explain`
+//!   prints) and execute that plan (`Plan::execute`); write result.json, CSV and SVG plots
+//!   into DIR, or print the JSON with `--json`.
 //! - `stickslip explain [SCENE]`: print the plan (effects on and off with reasons, the
 //!   technique per effect, the estimated cost) without computing anything.
 //! - `stickslip reproduce [--out DIR]`: the verification pages (stickslip-verification).
@@ -26,7 +26,7 @@ use std::time::{Duration, Instant};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use stickslip_scene::{
-    run, write_outputs, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, Zones,
+    write_outputs, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, Zones,
 };
 
 /// Frictional contact mechanics: run scenes, explain their plan, reproduce the published
@@ -160,13 +160,15 @@ impl Bar {
 
 fn cmd_run(scene: Option<&PathBuf>, out: Option<&PathBuf>, json: bool) -> Result<(), SceneError> {
     let scene = load(scene)?;
+    // The plan `explain` prints; execution follows it and decides nothing again.
+    let plan = Plan::new(&scene)?;
     let bar = Bar::new();
     let cb = |p: Progress| bar.update(p);
     let opts = RunOptions { progress: Some(&cb) };
     let done = AtomicBool::new(false);
     let result = std::thread::scope(|sc| {
         sc.spawn(|| bar.watch(&done));
-        let r = run(&scene, &opts);
+        let r = plan.execute(&opts);
         done.store(true, Ordering::Relaxed);
         r
     });
