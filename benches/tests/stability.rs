@@ -286,7 +286,7 @@ fn quad_tanh_sinh_endpoint() -> Outcome {
             Ok(format!("converged, error {:.1e}", rel(e.value, 2.0)))
         }
         Ok(e) => Err(format!("claims convergence with error {:.1e}", rel(e.value, 2.0))),
-        Err(stickslip_quad::QuadError::NotConverged { estimate, .. }) => {
+        Err(stickslip_quad::Error::NotConverged { estimate, .. }) => {
             let true_err = (estimate.value - 2.0).abs();
             if true_err <= estimate.error {
                 Ok(format!(

@@ -266,7 +266,7 @@ fn outer(f: impl Fn(f64) -> f64, lo: f64, hi: f64, scale: f64) -> f64 {
         .expect("valid");
     match gauss_kronrod(|phi: f64| f(mid + half * phi.cos()) * half * phi.sin(), 0.0, PI, &cfg) {
         Ok(e) => e.value,
-        Err(stickslip_quad::QuadError::NotConverged { estimate, .. }) => estimate.value,
+        Err(stickslip_quad::Error::NotConverged { estimate, .. }) => estimate.value,
         Err(_) => f64::NAN,
     }
 }
@@ -332,7 +332,7 @@ pub(super) fn rolling_stress(mode: Mode) -> MethodReport {
         error_measure: "max of |int sigma_y dx - P|/P and |int tau dx - Q|/|Q|; the outer \
                         integral is adaptive Gauss-Kronrod at 1e-14 in x = mid + half cos(phi)"
             .into(),
-        claim_source: "the requested `StressConfig::tol.rel` (relative to the stress scale S; \
+        claim_source: "the requested `StressConfig::tol.rel()` (relative to the stress scale S; \
                        S is of order P/l here)"
             .into(),
         settings,

@@ -52,7 +52,7 @@ pub enum Regime {
 /// impossible relative accuracy).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StressConfig {
-    /// Requested accuracy (`tol.rel` is relative to the stress scale $S$).
+    /// Requested accuracy (`tol.rel()` is relative to the stress scale $S$).
     pub tol: Tolerance,
     /// Subdivision limit of the adaptive Gauss–Kronrod integrator.
     pub max_subdivisions: usize,
@@ -61,6 +61,9 @@ pub struct StressConfig {
 impl Default for StressConfig {
     /// $10^{-12}$ relative, at most 200 subintervals.
     fn default() -> Self {
-        StressConfig { tol: Tolerance { abs: 0.0, rel: 1e-12 }, max_subdivisions: 200 }
+        StressConfig {
+            tol: Tolerance::relative(1e-12).expect("1e-12 is a valid relative tolerance"),
+            max_subdivisions: 200,
+        }
     }
 }

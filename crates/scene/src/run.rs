@@ -1051,10 +1051,8 @@ fn run_rolling(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, Sc
     let NormalLoad::Force(load) = scene.load.normal else { return unreachable_plan() };
     let rho = scene.load.friction;
     let cfg = StressConfig {
-        tol: stickslip_rolling::Tolerance {
-            abs: 0.0,
-            rel: scene.solver.tolerance.clamp(1e-14, 1e-3),
-        },
+        tol: stickslip_rolling::Tolerance::relative(scene.solver.tolerance.clamp(1e-14, 1e-3))
+            .map_err(|e| solver_err("tolerance", e))?,
         max_subdivisions: 200,
     };
     let (el, alpha_beta) = match scene.substrate {
