@@ -156,7 +156,8 @@ pub(super) fn graded_stress(mode: Mode) -> MethodReport {
     }
     let mut settings = Vec::new();
     for tol in tols {
-        let acc = Accuracy::new(tol).expect("tolerance in range");
+        let acc = Accuracy::new(stickslip_graded::Tolerance::relative(tol).expect("tolerance"))
+            .expect("tolerance in range");
         let sweep = || {
             let mut worst = 0.0f64;
             for (key, pts) in &groups {

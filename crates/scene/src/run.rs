@@ -816,8 +816,11 @@ fn run_line(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, Scene
         }
         if grading {
             let m = graded_mat.ok_or_else(|| solver_err("plan", "graded material missing"))?;
-            let acc = Accuracy::new(scene.solver.tolerance.clamp(1e-15, 1e-2))
-                .map_err(|e| solver_err("accuracy", e))?;
+            let acc = Accuracy::new(
+                stickslip_graded::Tolerance::relative(scene.solver.tolerance.clamp(1e-15, 1e-2))
+                    .map_err(|e| solver_err("accuracy", e))?,
+            )
+            .map_err(|e| solver_err("accuracy", e))?;
             let sd = SurfaceDisplacement::new(&m, graded_load()?, acc)
                 .map_err(|e| solver_err("graded surface displacement", e))?;
             for (i, &x) in xs.iter().enumerate() {
@@ -878,8 +881,11 @@ fn run_line(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, Scene
                 None => GradedMaterial::new(sub.youngs_modulus(), 0.0, sub.poisson_ratio())
                     .map_err(|e| solver_err("Flamant material", e))?,
             };
-            let acc = Accuracy::new(scene.solver.tolerance.clamp(1e-15, 1e-2))
-                .map_err(|e| solver_err("accuracy", e))?;
+            let acc = Accuracy::new(
+                stickslip_graded::Tolerance::relative(scene.solver.tolerance.clamp(1e-15, 1e-2))
+                    .map_err(|e| solver_err("accuracy", e))?,
+            )
+            .map_err(|e| solver_err("accuracy", e))?;
             Some(
                 StressField::new(&m, graded_load()?, acc)
                     .map_err(|e| solver_err("stress field", e))?,
