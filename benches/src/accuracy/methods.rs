@@ -399,7 +399,7 @@ pub(super) fn lp_mindlin(mode: Mode) -> MethodReport {
 
 /// The fast solver (FFT products, semismooth Newton) on Hertz circles against Mindlin.
 pub(super) fn fast_mindlin(mode: Mode, notes: &mut Vec<String>) -> MethodReport {
-    use stickslip_traction::fast::{FastLoad, FastProblem, TractionDirections};
+    use stickslip_traction::fast::{FastProblem, TractionDirections};
     let across: Vec<usize> = match mode {
         Mode::Quick => vec![16, 32],
         Mode::Full => vec![16, 32, 64, 128, 256],
@@ -412,7 +412,7 @@ pub(super) fn fast_mindlin(mode: Mode, notes: &mut Vec<String>) -> MethodReport 
     for n in across {
         let grid = ContactGrid::hertz_circle(a, p, n).expect("grid");
         let run = || {
-            FastProblem::new(&grid, [steel, steel], f, FastLoad::polar(t, 0.0).expect("load"))
+            FastProblem::new(&grid, [steel, steel], f, Load::polar(t, 0.0).expect("load"))
                 .expect("valid problem")
                 .with_directions(TractionDirections::ParallelToForce)
                 .expect("directions")

@@ -26,8 +26,8 @@ use stickslip_rolling::{CarterParams, GoryachevaParams, Regime as RollRegime, St
 use stickslip_traction::closed::{Cattaneo, Deresiewicz, Lubkin, Mindlin};
 use stickslip_traction::fast::TensorConvolution;
 use stickslip_traction::{
-    ContactGrid, ElementState, FastConfig, FastLoad, FastProblem, FastSolution, InfluenceModel,
-    Load as LpLoad, Patch as GridPatch, PatchPressure, Shape, TractionProblem,
+    ContactGrid, ElementState, FastConfig, FastProblem, FastSolution, InfluenceModel,
+    Load as TractionLoad, Patch as GridPatch, PatchPressure, Shape, TractionProblem,
 };
 
 use crate::error::{ErrorKind, SceneError};
@@ -955,10 +955,10 @@ fn run_line(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, Scene
 /// scene (key `load.tangential` or `load.moment`), an unconverged iteration names
 /// `solver.tolerance`; anything else is a solver failure.
 fn fast_err(e: stickslip_traction::Error) -> SceneError {
-    use stickslip_traction::Error as E;
+    use stickslip_traction::{Error as E, LoadKind};
     match &e {
-        E::OutOfDomain { name, .. } if name.contains("capacity") || name.contains("(f P)") => {
-            let key = if name.contains("moment") { "load.moment" } else { "load.tangential" };
+        E::CapacityExceeded { load, .. } => {
+            let key = if *load == LoadKind::Moment { "load.moment" } else { "load.tangential" };
             SceneError::new(
                 ErrorKind::Impossible,
                 format!("the load exceeds what friction can carry: {e}"),
@@ -966,7 +966,7 @@ fn fast_err(e: stickslip_traction::Error) -> SceneError {
             .key(key)
             .hint("reduce the load: a force alone is carried up to f P, a moment alone up to the spin capacity, and less of each when both act")
         }
-        E::OutOfDomain { name, .. } if name.contains("no stick component") => {
+        E::NoStickLeft { .. } => {
             SceneError::new(
                 ErrorKind::Solver,
                 format!("the load is at or near what friction can carry: {e}"),
@@ -974,7 +974,7 @@ fn fast_err(e: stickslip_traction::Error) -> SceneError {
             .key("load.tangential")
             .hint("reduce load.tangential or load.moment: together they are carried only below gross slip, which comes before f P and the spin capacity are each reached")
         }
-        E::NotConverged { .. } => {
+        E::NotConverged { .. } | E::ToleranceOutOfRange { .. } => {
             SceneError::new(ErrorKind::Solver, format!("fast solver: {e}"))
                 .key("solver.tolerance")
                 .hint("raise solver.tolerance (e.g. 1e-8), or change solver.grid")
@@ -1500,9 +1500,9 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
         }
         Some(Technique::LpForce | Technique::LpMoment) => {
             let load_mode = if fr == Some(Technique::LpMoment) {
-                LpLoad::Moment { moment: l.moment, centre: None }
+                TractionLoad::Moment { moment: l.moment, centre: None }
             } else {
-                LpLoad::Force { magnitude: tmag, angle: dir }
+                TractionLoad::Force { magnitude: tmag, angle: dir }
             };
             cx.progress("modified LP", 0, 1);
             let ts = Instant::now();
@@ -1568,15 +1568,21 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
         Some(Technique::Fast) => {
             let force = l.tangential != 0.0;
             let twist = l.moment != 0.0;
-            let mut load = FastLoad::polar(if force { tmag } else { 0.0 }, dir)
+            let mut load = TractionLoad::polar(if force { tmag } else { 0.0 }, dir)
                 .map_err(|e| solver_err("fast solver load", e))?;
             if twist {
                 load = load
                     .with_moment(l.moment, None)
                     .map_err(|e| solver_err("fast solver load", e))?;
             }
-            let config = FastConfig::new(scene.solver.tolerance.clamp(1e-14, 1e-1), 100)
-                .map_err(|e| solver_err("fast solver configuration", e))?;
+            let (lo, hi) = FastConfig::TOLERANCE_RANGE;
+            let config =
+                stickslip_traction::Tolerance::relative(scene.solver.tolerance.clamp(lo, hi))
+                    .map_err(|e| solver_err("fast solver configuration", e))
+                    .and_then(|t| {
+                        FastConfig::new(t, 100)
+                            .map_err(|e| solver_err("fast solver configuration", e))
+                    })?;
             cx.progress("fast solver", 0, 1);
             let ts = Instant::now();
             let sol = FastProblem::new(&grid, [sub, ind], f, load)
@@ -1628,7 +1634,7 @@ fn run_3d(scene: &Scene, plan: &Plan, cx: &mut Ctx<'_>) -> Result<Parts, SceneEr
                 sol.info.residual,
                 sol.info.load_residual,
                 sol.info.setup_seconds,
-                sol.info.seconds,
+                sol.info.solve_seconds,
                 sol.resultant.0,
                 sol.resultant.1,
                 sol.moment,
