@@ -27,7 +27,8 @@ fn accuracy(acc: Accuracy) -> f64 {
 fn bench(c: &mut Criterion) {
     let m = GradedMaterial::new(1.0, 0.3, 0.3).expect("material");
     for tol in [1e-6, 1e-10] {
-        let acc = Accuracy::new(tol).expect("accuracy");
+        let acc = Accuracy::new(stickslip_graded::Tolerance::relative(tol).expect("tolerance"))
+            .expect("accuracy");
         println!(
             "accuracy graded StressField tol {tol:.0e}: max err {:.2e} vs mpmath",
             accuracy(acc)

@@ -9,7 +9,7 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Instant;
 use stickslip_halfspace::Material;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{ContactGrid, ElementState, FastLoad, FastProblem};
+use stickslip_traction::{ContactGrid, ElementState, FastProblem, Load};
 
 const P: f64 = 2160.0;
 const F: f64 = 0.1;
@@ -51,7 +51,7 @@ fn bench(c: &mut Criterion) {
         }
         let cells = side * 100 / 256;
         let g = grid(side, cells, a);
-        let load = FastLoad::polar(RATIO * F * P, 0.0).expect("load");
+        let load = Load::polar(RATIO * F * P, 0.0).expect("load");
         let problem = FastProblem::new(&g, [s, s], F, load).expect("problem");
         let t0 = Instant::now();
         let sol = problem.solve().expect("solve");

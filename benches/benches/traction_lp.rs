@@ -41,7 +41,7 @@ fn bench(c: &mut Criterion) {
             mindlin,
             sol.info.iterations,
             sol.info.rejected_entries,
-            sol.info.lp_time.as_secs_f64()
+            sol.info.lp_seconds
         );
         if n_across >= 36 {
             group.measurement_time(Duration::from_secs(30));

@@ -286,7 +286,7 @@ fn quad_tanh_sinh_endpoint() -> Outcome {
             Ok(format!("converged, error {:.1e}", rel(e.value, 2.0)))
         }
         Ok(e) => Err(format!("claims convergence with error {:.1e}", rel(e.value, 2.0))),
-        Err(stickslip_quad::QuadError::NotConverged { estimate, .. }) => {
+        Err(stickslip_quad::Error::NotConverged { estimate, .. }) => {
             let true_err = (estimate.value - 2.0).abs();
             if true_err <= estimate.error {
                 Ok(format!(
@@ -366,8 +366,13 @@ fn graded_near_surface_and_edges() -> Outcome {
     for &k in &GRADED_K {
         let m = GradedMaterial::new(1.0, k, 0.3).map_err(|e| e.to_string())?;
         let load = SurfaceLoad::cylinder(a, p0, k, mu).map_err(|e| e.to_string())?;
-        let f = StressField::new(&m, load, Accuracy::new(1e-12).map_err(|e| e.to_string())?)
-            .map_err(|e| e.to_string())?;
+        let f = StressField::new(
+            &m,
+            load,
+            Accuracy::new(stickslip_graded::Tolerance::relative(1e-12).map_err(|e| e.to_string())?)
+                .map_err(|e| e.to_string())?,
+        )
+        .map_err(|e| e.to_string())?;
         let y = 1e-9 * a;
         for x in [0.0, 0.25 * a, -0.5 * a] {
             let s = f.stress(x, y).map_err(|e| e.to_string())?;
@@ -406,7 +411,8 @@ fn graded_equilibrium_extreme_k() -> Outcome {
         let f = StressField::new(
             &m,
             c.surface_load(0.0).map_err(|e| e.to_string())?,
-            Accuracy::new(1e-13).map_err(|e| e.to_string())?,
+            Accuracy::new(stickslip_graded::Tolerance::relative(1e-13).map_err(|e| e.to_string())?)
+                .map_err(|e| e.to_string())?,
         )
         .map_err(|e| e.to_string())?;
         let y = 0.5;

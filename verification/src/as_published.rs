@@ -195,9 +195,11 @@ pub fn two_term_stress(
     // Untruncated: -(P/2I) int K_c ds - (mu P / 2J) int K_s ds with P outside (fault 2), or
     // p(s) inside when fault 2 is off.
     let b = inp.beta;
-    let cfg = AdaptiveConfig::new(Tolerance { abs: 0.0, rel: 1e-11 })
-        .with_breakpoints(if x > -a && x < a { vec![x] } else { vec![] })
-        .map_err(|e| Error::Quadrature(e.to_string()))?;
+    let cfg = AdaptiveConfig::new(
+        Tolerance::relative(1e-11).map_err(|e| Error::Quadrature(e.to_string()))?,
+    )
+    .with_breakpoints(if x > -a && x < a { vec![x] } else { vec![] })
+    .map_err(|e| Error::Quadrature(e.to_string()))?;
     let mut out = [0.0; 3];
     for (i, o) in out.iter_mut().enumerate() {
         let f = |s: f64| {

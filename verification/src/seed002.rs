@@ -162,8 +162,8 @@ pub fn f3_3_f3_4_eq3_5() -> Result<Check, Error> {
     let (p, f) = (pubv::EX1_P.value, pubv::EX1_F.value);
     let a = hertz_radius(p, pubv::EX1_R.value, &s, &s)?;
     let fp = f * p;
-    let qerr = |e: stickslip_quad::QuadError| Error::Quadrature(e.to_string());
-    let cfg = AdaptiveConfig::new(Tolerance { abs: 0.0, rel: 1e-12 });
+    let qerr = |e: stickslip_quad::Error| Error::Quadrature(e.to_string());
+    let cfg = AdaptiveConfig::new(Tolerance::relative(1e-12).map_err(qerr)?);
     let mut rows = Vec::new();
     let d = Deresiewicz::new(a, p, f, 0.5 * fp)?;
     // Resultant of the unloading traction equals T (breakpoints at the radii where the
@@ -173,7 +173,7 @@ pub fn f3_3_f3_4_eq3_5() -> Result<Check, Error> {
         let astar = a * 0.5f64.cbrt();
         let mut bps = vec![astar.min(b), astar.max(b)];
         bps.dedup();
-        let cfgb = AdaptiveConfig::new(Tolerance { abs: 1e-12 * fp, rel: 1e-12 })
+        let cfgb = AdaptiveConfig::new(Tolerance::new(1e-12 * fp, 1e-12).map_err(qerr)?)
             .with_breakpoints(bps)
             .map_err(qerr)?;
         let r = gauss_kronrod(

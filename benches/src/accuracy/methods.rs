@@ -156,7 +156,8 @@ pub(super) fn graded_stress(mode: Mode) -> MethodReport {
     }
     let mut settings = Vec::new();
     for tol in tols {
-        let acc = Accuracy::new(tol).expect("tolerance in range");
+        let acc = Accuracy::new(stickslip_graded::Tolerance::relative(tol).expect("tolerance"))
+            .expect("tolerance in range");
         let sweep = || {
             let mut worst = 0.0f64;
             for (key, pts) in &groups {
@@ -266,7 +267,7 @@ fn outer(f: impl Fn(f64) -> f64, lo: f64, hi: f64, scale: f64) -> f64 {
         .expect("valid");
     match gauss_kronrod(|phi: f64| f(mid + half * phi.cos()) * half * phi.sin(), 0.0, PI, &cfg) {
         Ok(e) => e.value,
-        Err(stickslip_quad::QuadError::NotConverged { estimate, .. }) => estimate.value,
+        Err(stickslip_quad::Error::NotConverged { estimate, .. }) => estimate.value,
         Err(_) => f64::NAN,
     }
 }
@@ -332,7 +333,7 @@ pub(super) fn rolling_stress(mode: Mode) -> MethodReport {
         error_measure: "max of |int sigma_y dx - P|/P and |int tau dx - Q|/|Q|; the outer \
                         integral is adaptive Gauss-Kronrod at 1e-14 in x = mid + half cos(phi)"
             .into(),
-        claim_source: "the requested `StressConfig::tol.rel` (relative to the stress scale S; \
+        claim_source: "the requested `StressConfig::tol.rel()` (relative to the stress scale S; \
                        S is of order P/l here)"
             .into(),
         settings,
@@ -398,7 +399,7 @@ pub(super) fn lp_mindlin(mode: Mode) -> MethodReport {
 
 /// The fast solver (FFT products, semismooth Newton) on Hertz circles against Mindlin.
 pub(super) fn fast_mindlin(mode: Mode, notes: &mut Vec<String>) -> MethodReport {
-    use stickslip_traction::fast::{FastLoad, FastProblem, TractionDirections};
+    use stickslip_traction::fast::{FastProblem, TractionDirections};
     let across: Vec<usize> = match mode {
         Mode::Quick => vec![16, 32],
         Mode::Full => vec![16, 32, 64, 128, 256],
@@ -411,7 +412,7 @@ pub(super) fn fast_mindlin(mode: Mode, notes: &mut Vec<String>) -> MethodReport 
     for n in across {
         let grid = ContactGrid::hertz_circle(a, p, n).expect("grid");
         let run = || {
-            FastProblem::new(&grid, [steel, steel], f, FastLoad::polar(t, 0.0).expect("load"))
+            FastProblem::new(&grid, [steel, steel], f, Load::polar(t, 0.0).expect("load"))
                 .expect("valid problem")
                 .with_directions(TractionDirections::ParallelToForce)
                 .expect("directions")

@@ -38,7 +38,7 @@ fn half_width_factor(m: &GradedMaterial) -> f64 {
 pub fn half_width_from_load(m: &GradedMaterial, radius: f64, load: f64) -> Result<f64, Error> {
     require(radius.is_finite() && radius > 0.0, "radius", radius, "0 < R < inf")?;
     require(load.is_finite() && load > 0.0, "load", load, "0 < P < inf")?;
-    let c = half_width_factor(m) * radius * (1.0 - m.nu() * m.nu()) / m.e0();
+    let c = half_width_factor(m) * radius * (1.0 - m.poisson_ratio() * m.poisson_ratio()) / m.e0();
     Ok(((load.ln() + c.ln()) / (2.0 + m.k())).exp())
 }
 
@@ -50,7 +50,7 @@ pub fn half_width_from_load(m: &GradedMaterial, radius: f64, load: f64) -> Resul
 pub fn load_from_half_width(m: &GradedMaterial, radius: f64, a: f64) -> Result<f64, Error> {
     require(radius.is_finite() && radius > 0.0, "radius", radius, "0 < R < inf")?;
     require(a.is_finite() && a > 0.0, "a", a, "0 < a < inf")?;
-    let c = half_width_factor(m) * radius * (1.0 - m.nu() * m.nu()) / m.e0();
+    let c = half_width_factor(m) * radius * (1.0 - m.poisson_ratio() * m.poisson_ratio()) / m.e0();
     Ok(((2.0 + m.k()) * a.ln() - c.ln()).exp())
 }
 
@@ -139,9 +139,9 @@ impl RigidCylinder {
     /// A5; see [`SurfaceLoad::cylinder`]).
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] for non-finite $\mu$.
-    pub fn surface_load(&self, mu: f64) -> Result<SurfaceLoad, Error> {
-        SurfaceLoad::cylinder(self.a, self.p0, self.mat.k(), mu)
+    /// [`Error::OutOfDomain`] for a non-finite friction coefficient $\mu$.
+    pub fn surface_load(&self, friction: f64) -> Result<SurfaceLoad, Error> {
+        SurfaceLoad::cylinder(self.a, self.p0, self.mat.k(), friction)
     }
 
     /// Indentation depth below the undisturbed surface at infinity (seed 000 eq 16, exact;
@@ -211,13 +211,13 @@ impl RigidCylinder {
     ///
     /// # Errors
     /// [`Error::NoAbsoluteIndentation`] at $k = 0$ ($h$ infinite);
-    /// [`Error::OutOfDomain`] for $|x| > a$ or non-finite $\mu$.
-    pub fn slip_displacement_eq32(&self, x: f64, mu: f64) -> Result<f64, Error> {
-        require(mu.is_finite(), "mu", mu, "finite")?;
+    /// [`Error::OutOfDomain`] for $|x| > a$ or a non-finite friction coefficient $\mu$.
+    pub fn slip_displacement_eq32(&self, x: f64, friction: f64) -> Result<f64, Error> {
+        require(friction.is_finite(), "friction", friction, "finite")?;
         require(x.abs() <= self.a, "x", x, "|x| <= a")?;
         let h = self.indentation()?;
         let (k, b) = (self.mat.k(), self.mat.beta());
-        Ok(mu * (1.0 + k) * (1.0 + k) / (b * b) * h * (1.0 - k * x * x / (self.a * self.a)))
+        Ok(friction * (1.0 + k) * (1.0 + k) / (b * b) * h * (1.0 - k * x * x / (self.a * self.a)))
     }
 }
 

@@ -133,7 +133,7 @@ impl SurfaceDisplacement {
     pub fn parts(&self, x: f64) -> Result<DisplacementParts, Error> {
         let ints = self.integrals(x)?;
         let m = &self.mat;
-        let (k, nu, beta) = (m.k(), m.nu(), m.beta());
+        let (k, nu, beta) = (m.k(), m.poisson_ratio(), m.beta());
         let c1 = (1.0 - nu * nu) / m.e0();
         let sb = (beta * FRAC_PI_2).sin();
         let cbk = cos_beta_half_pi_over_k(beta, nu, k);

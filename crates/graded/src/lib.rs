@@ -41,4 +41,5 @@ pub use error::Error;
 pub use load::{Patch, Profile, SurfaceLoad, TractionFn};
 pub use material::{beta, checked_beta, checked_i_k, checked_j_k, i_k, j_k, GradedMaterial};
 pub use stickslip_halfspace::{Displacement2, Stress2};
+pub use stickslip_quad::Tolerance;
 pub use stress::{Accuracy, StressField, MIN_RELATIVE_DEPTH};

@@ -148,15 +148,16 @@ impl SurfaceLoad {
 
     /// The rigid-cylinder pressure on the graded half-plane with sliding friction $q = \mu p$
     /// (FORMULAS.md A4; seed 000 eqs 17–25 with the load inside the integral, A2):
-    /// $p(s) = p_0(1-s^2/a^2)^{(1+k)/2}$. `mu = 0` gives frictionless indentation.
+    /// $p(s) = p_0(1-s^2/a^2)^{(1+k)/2}$. `friction = 0` gives frictionless indentation.
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] for $a \le 0$, non-finite $p_0$ or $\mu$, or $k \notin [0,1)$.
-    pub fn cylinder(a: f64, p0: f64, k: f64, mu: f64) -> Result<Self, Error> {
+    /// [`Error::OutOfDomain`] for $a \le 0$, non-finite $p_0$ or friction $\mu$, or $k \notin [0,1)$.
+    pub fn cylinder(a: f64, p0: f64, k: f64, friction: f64) -> Result<Self, Error> {
         require(p0.is_finite(), "p0", p0, "finite")?;
-        require(mu.is_finite(), "mu", mu, "finite")?;
+        require(friction.is_finite(), "friction", friction, "finite")?;
         require(k.is_finite() && (0.0..1.0).contains(&k), "k", k, "0 <= k < 1")?;
-        let patch = Patch::new(0.0, a, 0.5 * (1.0 + k), Profile::Uniform { p: p0, q: mu * p0 })?;
+        let patch =
+            Patch::new(0.0, a, 0.5 * (1.0 + k), Profile::Uniform { p: p0, q: friction * p0 })?;
         Ok(Self::new().with_patch(patch))
     }
 
@@ -172,10 +173,10 @@ impl SurfaceLoad {
     ///
     /// # Errors
     /// As [`SurfaceLoad::cylinder`], plus $0 < c \le a$ required.
-    pub fn partial_slip(a: f64, c: f64, p0: f64, k: f64, mu: f64) -> Result<Self, Error> {
-        let base = Self::cylinder(a, p0, k, mu)?;
+    pub fn partial_slip(a: f64, c: f64, p0: f64, k: f64, friction: f64) -> Result<Self, Error> {
+        let base = Self::cylinder(a, p0, k, friction)?;
         require(c > 0.0 && c <= a, "c", c, "0 < c <= a")?;
-        let amp = -mu * p0 * (c / a).powf(1.0 + k);
+        let amp = -friction * p0 * (c / a).powf(1.0 + k);
         let patch = Patch::new(0.0, c, 0.5 * (1.0 + k), Profile::Uniform { p: 0.0, q: amp })?;
         Ok(base.with_patch(patch))
     }

@@ -132,7 +132,7 @@ impl GradedMaterial {
     }
     /// Poisson ratio $\nu$.
     #[must_use]
-    pub fn nu(&self) -> f64 {
+    pub fn poisson_ratio(&self) -> f64 {
         self.nu
     }
     /// $\beta$, see [`beta`].

@@ -7,7 +7,7 @@ use stickslip_quad::Rule as _;
 /// The `n`-point Gauss–Jacobi rule on $[-1,1]$ for the weight $(1-\xi)^\alpha(1+\xi)^\beta$
 /// (plain Gauss–Legendre when both exponents vanish).
 pub(crate) fn jacobi(n: usize, alpha: f64, beta: f64) -> Result<Rule, Error> {
-    let wrap = |e: stickslip_quad::QuadError| Error::Numerical {
+    let wrap = |e: stickslip_quad::Error| Error::Numerical {
         what: "building a Gauss-Jacobi rule",
         detail: e.to_string(),
     };

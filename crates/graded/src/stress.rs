@@ -7,6 +7,7 @@ use crate::material::GradedMaterial;
 use crate::panels::{breakpoints, integrate, Grading, RuleSet};
 use rayon::prelude::*;
 pub use stickslip_halfspace::Stress2;
+use stickslip_quad::Tolerance;
 
 /// The accuracy knob of the integrators: the number of nodes per panel of the composite
 /// Gauss–Jacobi rule (see the `panels` module documentation).
@@ -16,16 +17,25 @@ pub struct Accuracy {
 }
 
 impl Accuracy {
-    /// Choose the rule for a target relative accuracy `rel_tol` in $[10^{-15}, 10^{-2}]$.
+    /// The relative tolerances this knob supports, $[10^{-15}, 10^{-2}]$ (the calibrated
+    /// range of the nodes-per-panel mapping of [`Accuracy::new`]).
+    pub const TOLERANCE_RANGE: (f64, f64) = (1e-15, 1e-2);
+
+    /// Choose the rule for a target relative accuracy `tolerance.rel()` in
+    /// [`Accuracy::TOLERANCE_RANGE`] (the tolerance must be purely relative, `abs() == 0`).
     ///
     /// The mapping (nodes per panel) was calibrated on the worst panels (merged end panels next
     /// to a field point just outside the load), which converge like $\approx 2.3^{-2n}$;
     /// checked against the mpmath reference of `scripts/graded_reference.py` in the tests.
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] outside the range above.
-    pub fn new(rel_tol: f64) -> Result<Self, Error> {
-        require((1e-15..=1e-2).contains(&rel_tol), "rel_tol", rel_tol, "1e-15 <= rel_tol <= 1e-2")?;
+    /// [`Error::OutOfDomain`] for a relative part outside the range above (never clamped) or a
+    /// non-zero absolute part.
+    pub fn new(tolerance: Tolerance) -> Result<Self, Error> {
+        require(tolerance.abs() == 0.0, "tolerance abs", tolerance.abs(), "0 (relative only)")?;
+        let rel_tol = tolerance.rel();
+        let (lo, hi) = Self::TOLERANCE_RANGE;
+        require((lo..=hi).contains(&rel_tol), "tolerance rel", rel_tol, "1e-15 <= rel <= 1e-2")?;
         // 2 n log10(2.3) >= -log10(tol), plus a margin of two nodes.
         let n = (-rel_tol.log10() / (2.0 * 2.3f64.log10())).ceil() as usize + 2;
         Ok(Self { nodes: n })

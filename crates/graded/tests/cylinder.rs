@@ -101,7 +101,12 @@ fn spectral_relation() {
     for &k in &[1e-6, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.95] {
         let m = GradedMaterial::new(1.0, k, 0.3).unwrap();
         let load = SurfaceLoad::cylinder(1.0, 1.0, k, 0.0).unwrap();
-        let d = SurfaceDisplacement::new(&m, load, Accuracy::new(1e-13).unwrap()).unwrap();
+        let d = SurfaceDisplacement::new(
+            &m,
+            load,
+            Accuracy::new(stickslip_graded::Tolerance::relative(1e-13).unwrap()).unwrap(),
+        )
+        .unwrap();
         for &x in &[0.0, 0.1, -0.37, 0.5, 0.9, -0.99, 0.999999, 1.0, -1.0] {
             let got = d.integrals(x).unwrap().p_even;
             let want = PI * (1.0 + k) / (2.0 * (k * PI / 2.0).cos()) * (1.0 - k * x * x);
@@ -120,7 +125,12 @@ fn odd_integral_vs_mpmath() {
         let (k, x, want) = (row[0], row[1], row[2]);
         let m = GradedMaterial::new(1.0, k, 0.3).unwrap();
         let load = SurfaceLoad::cylinder(1.0, 1.0, k, 0.0).unwrap();
-        let d = SurfaceDisplacement::new(&m, load, Accuracy::new(1e-13).unwrap()).unwrap();
+        let d = SurfaceDisplacement::new(
+            &m,
+            load,
+            Accuracy::new(stickslip_graded::Tolerance::relative(1e-13).unwrap()).unwrap(),
+        )
+        .unwrap();
         let got = d.integrals(x).unwrap().p_odd;
         // scale: the integral is O(1); use absolute error where it vanishes (x = 0)
         let e = if want.abs() < 1e-3 { (got - want).abs() } else { rel(got, want) };

@@ -13,7 +13,12 @@ use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 fn field(k: f64, nu: f64, mu: f64, a: f64, p0: f64, acc: f64) -> StressField {
     let m = GradedMaterial::new(1.0, k, nu).unwrap();
     let load = SurfaceLoad::cylinder(a, p0, k, mu).unwrap();
-    StressField::new(&m, load, Accuracy::new(acc).unwrap()).unwrap()
+    StressField::new(
+        &m,
+        load,
+        Accuracy::new(stickslip_graded::Tolerance::relative(acc).unwrap()).unwrap(),
+    )
+    .unwrap()
 }
 
 /// Relative error of a stress state, component-wise against |component|, but with a floor of
@@ -94,8 +99,12 @@ fn equilibrium() {
     for &(k, nu, mu) in &[(0.1, 0.3, 0.5), (0.5, 0.25, 1.0), (0.95, 0.1, 0.2), (0.01, 0.45, 0.7)] {
         let m = GradedMaterial::new(1.0, k, nu).unwrap();
         let c = RigidCylinder::from_half_width(&m, 1.0, 1.0).unwrap();
-        let f = StressField::new(&m, c.surface_load(mu).unwrap(), Accuracy::new(1e-13).unwrap())
-            .unwrap();
+        let f = StressField::new(
+            &m,
+            c.surface_load(mu).unwrap(),
+            Accuracy::new(stickslip_graded::Tolerance::relative(1e-13).unwrap()).unwrap(),
+        )
+        .unwrap();
         let (big_p, big_q) = (c.load(), mu * c.load());
         for &y in &[1e-3, 0.1, 1.0, 10.0] {
             let cfg = AdaptiveConfig::new(Tolerance::new(0.0, 1e-13).unwrap())
@@ -213,7 +222,7 @@ fn domain_errors() {
     assert!(matches!(f.stress(0.0, 0.0), Err(Error::OutOfDomain { name: "y", .. })));
     assert!(matches!(f.stress(0.0, -1.0), Err(Error::OutOfDomain { name: "y", .. })));
     assert!(matches!(f.stress(f64::NAN, 1.0), Err(Error::OutOfDomain { name: "x", .. })));
-    assert!(Accuracy::new(0.5).is_err());
+    assert!(Accuracy::new(stickslip_graded::Tolerance::relative(0.5).unwrap()).is_err());
     assert!(Patch::new(0.0, -1.0, 0.5, Profile::Uniform { p: 1.0, q: 0.0 }).is_err());
     // far away and very deep points are finite and tiny
     let s = f.stress(1e8, 1e-3).unwrap();
@@ -247,7 +256,9 @@ fn grid_speed_and_accuracy() {
     println!(
         "200x200 grid, 3 stresses, Accuracy::new(1e-8) ({} nodes/panel), {} rayon threads: \
          {dt:.3} s",
-        Accuracy::new(tol::GRID_REL).unwrap().nodes(),
+        Accuracy::new(stickslip_graded::Tolerance::relative(tol::GRID_REL).unwrap())
+            .unwrap()
+            .nodes(),
         rayon::current_num_threads()
     );
     st.report("grid vs 1e-13 field (subsample)");

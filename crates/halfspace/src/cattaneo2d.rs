@@ -21,7 +21,7 @@ use std::f64::consts::PI;
 pub struct Cattaneo2d {
     a: f64,
     p0: f64,
-    f: f64,
+    friction: f64,
     q: f64,
     /// $|Q|/(fP)$, exactly as given (0 when $Q = 0$).
     ratio: f64,
@@ -40,14 +40,18 @@ impl Cattaneo2d {
     /// [`Error::OutOfDomain`] for $a, p_0$ not finite and positive, $f$ negative or not
     /// finite, $Q$ not finite; [`Error::GrossSlip`] if $|Q| > fP$ (beyond 4 ulp of rounding,
     /// which is taken as $|Q| = fP$).
-    pub fn new(a: f64, p0: f64, f: f64, q: f64) -> Result<Self, Error> {
+    pub fn new(a: f64, p0: f64, friction: f64, q: f64) -> Result<Self, Error> {
         positive("a", a)?;
         positive("p0", p0)?;
         finite("q", q)?;
-        if !(f >= 0.0 && f.is_finite()) {
-            return Err(Error::OutOfDomain { name: "f", value: f, allowed: "finite, >= 0" });
+        if !(friction >= 0.0 && friction.is_finite()) {
+            return Err(Error::OutOfDomain {
+                name: "friction",
+                value: friction,
+                allowed: "finite, >= 0",
+            });
         }
-        let limit = f * PI * a * p0 / 2.0;
+        let limit = friction * PI * a * p0 / 2.0;
         // A Q computed as f P by the caller may differ from our f P in the last bits: treat
         // |Q| within 4 ulp of the limit as exactly sliding (c = 0).
         if q.abs() > limit * (1.0 + 4.0 * f64::EPSILON) {
@@ -55,7 +59,7 @@ impl Cattaneo2d {
         }
         let ratio = if q == 0.0 { 0.0 } else { (q.abs() / limit).min(1.0) };
         let c = a * (1.0 - ratio).sqrt();
-        Ok(Self { a, p0, f, q, ratio, c })
+        Ok(Self { a, p0, friction, q, ratio, c })
     }
 
     /// Contact half-width $a$.
@@ -101,7 +105,7 @@ impl Cattaneo2d {
         if ax >= self.a || self.ratio == 0.0 {
             return 0.0;
         }
-        let fp0 = self.f * self.p0;
+        let fp0 = self.friction * self.p0;
         if ax < self.c {
             let sa = ((self.a - ax) * (self.a + ax)).sqrt();
             let sc = ((self.c - ax) * (self.c + ax)).sqrt();
@@ -126,7 +130,7 @@ impl Cattaneo2d {
         let mut s = stress_potential(self.a, self.p0, 0.0, x, y);
         if self.ratio > 0.0 {
             let sign = if self.q < 0.0 { -1.0 } else { 1.0 };
-            let q0 = sign * self.f * self.p0;
+            let q0 = sign * self.friction * self.p0;
             s = s.add_scaled(stress_potential(self.a, 0.0, q0, x, y), 1.0);
             if self.c > 0.0 {
                 let qc = q0 * self.c / self.a;

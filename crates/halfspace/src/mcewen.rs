@@ -172,8 +172,8 @@ impl HertzTraction {
     ///
     /// # Errors
     /// As [`HertzTraction::new`].
-    pub fn sliding(a: f64, p0: f64, f: f64) -> Result<Self, Error> {
-        Self::new(a, p0, f * p0)
+    pub fn sliding(a: f64, p0: f64, friction: f64) -> Result<Self, Error> {
+        Self::new(a, p0, friction * p0)
     }
 
     /// Pressure $p(x) = p_0\sqrt{1-x^2/a^2}$ ($0$ outside) (Hertz; FORMULAS.md C).

@@ -10,8 +10,8 @@ use std::sync::Arc;
 
 use crate::{
     algebraic_endpoints, cauchy_pv, gauss_kronrod, tanh_sinh, weakly_singular_weighted,
-    AdaptiveConfig, Estimate, GaussChebyshev, GaussJacobi, GaussLegendre, KronrodRule, QuadError,
-    Rule, Tolerance,
+    AdaptiveConfig, Error, Estimate, GaussChebyshev, GaussJacobi, GaussLegendre, KronrodRule, Rule,
+    Tolerance,
 };
 
 const DATA: &str = include_str!("../tests/data/battery.csv");
@@ -150,7 +150,7 @@ pub struct Row {
     /// Integrand name.
     pub problem: &'static str,
     /// The method's result (an error if it did not converge or failed).
-    pub result: Result<Estimate, QuadError>,
+    pub result: Result<Estimate, Error>,
     /// Reference value.
     pub exact: f64,
     /// Requested tolerance.
@@ -163,7 +163,7 @@ impl Row {
     pub fn estimate(&self) -> Option<Estimate> {
         match &self.result {
             Ok(e) => Some(*e),
-            Err(QuadError::NotConverged { estimate, .. }) => Some(*estimate),
+            Err(Error::NotConverged { estimate, .. }) => Some(*estimate),
             Err(_) => None,
         }
     }
@@ -194,7 +194,7 @@ impl Row {
         let status = match &self.result {
             Ok(_) if self.passes() => "ok".to_string(),
             Ok(_) => "tol not reached".to_string(),
-            Err(QuadError::NotConverged { .. }) => "not converged".to_string(),
+            Err(Error::NotConverged { .. }) => "not converged".to_string(),
             Err(e) => format!("error: {e}"),
         };
         format!(
@@ -335,13 +335,13 @@ pub fn problems() -> Vec<Problem> {
 
 /// Sum of two pieces; not converged if either is not, or if the sum misses `tol`.
 fn both(
-    l: Result<Estimate, QuadError>,
-    r: Result<Estimate, QuadError>,
+    l: Result<Estimate, Error>,
+    r: Result<Estimate, Error>,
     tol: Tolerance,
-) -> Result<Estimate, QuadError> {
-    let get = |x: Result<Estimate, QuadError>| match x {
+) -> Result<Estimate, Error> {
+    let get = |x: Result<Estimate, Error>| match x {
         Ok(e) => Ok((e, true)),
-        Err(QuadError::NotConverged { estimate, .. }) => Ok((estimate, false)),
+        Err(Error::NotConverged { estimate, .. }) => Ok((estimate, false)),
         Err(e) => Err(e),
     };
     let (el, okl) = get(l)?;
@@ -350,7 +350,7 @@ fn both(
     if okl && okr && tol.accepts(e.value, e.error) {
         Ok(e)
     } else {
-        Err(QuadError::NotConverged { estimate: e, requested: tol.target(e.value) })
+        Err(Error::NotConverged { estimate: e, requested: tol.target(e.value) })
     }
 }
 

@@ -8,7 +8,7 @@ use crate::Estimate;
 /// met, or an input outside the domain of a rule is reported through one of these variants.
 #[non_exhaustive]
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum QuadError {
+pub enum Error {
     /// An input lies outside the domain where the rule or integrator is defined.
     #[error("{name} = {value} is out of domain (allowed: {allowed})")]
     OutOfDomain {

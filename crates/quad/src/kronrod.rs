@@ -13,7 +13,7 @@
 //! $(-\infty,p]$). The whole line is split at $0$ (or at the breakpoints).
 
 use crate::types::{check_ends, checked};
-use crate::{Estimate, QuadError, Tolerance};
+use crate::{Error, Estimate, Tolerance};
 
 /// Kronrod nodes and weights on $[0,1]$ (positive half, descending, QUADPACK layout): entries at
 /// odd indices are also Gauss nodes. Values from QUADPACK (Fullerton's 80-digit computation);
@@ -164,10 +164,10 @@ const FLOOR: f64 = 10.0 * f64::EPSILON;
 /// rounding floor).
 fn qk(
     rule: KronrodRule,
-    f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut dyn FnMut(f64) -> Result<f64, Error>,
     a: f64,
     b: f64,
-) -> Result<(f64, f64, bool), QuadError> {
+) -> Result<(f64, f64, bool), Error> {
     let t = rule.table();
     let m = t.xgk.len();
     let c = 0.5 * (a + b);
@@ -250,10 +250,10 @@ impl AdaptiveConfig {
     /// Set the subdivision limit.
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] if `n == 0`.
-    pub fn with_max_subdivisions(mut self, n: usize) -> Result<Self, QuadError> {
+    /// [`Error::OutOfDomain`] if `n == 0`.
+    pub fn with_max_subdivisions(mut self, n: usize) -> Result<Self, Error> {
         if n == 0 {
-            return Err(QuadError::OutOfDomain {
+            return Err(Error::OutOfDomain {
                 name: "max_subdivisions",
                 value: 0.0,
                 allowed: ">= 1",
@@ -266,10 +266,10 @@ impl AdaptiveConfig {
     /// Set the breakpoints (any order; duplicates are merged).
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] if a breakpoint is not finite.
-    pub fn with_breakpoints(mut self, points: Vec<f64>) -> Result<Self, QuadError> {
+    /// [`Error::OutOfDomain`] if a breakpoint is not finite.
+    pub fn with_breakpoints(mut self, points: Vec<f64>) -> Result<Self, Error> {
         if let Some(&p) = points.iter().find(|p| !p.is_finite()) {
-            return Err(QuadError::OutOfDomain { name: "breakpoint", value: p, allowed: "finite" });
+            return Err(Error::OutOfDomain { name: "breakpoint", value: p, allowed: "finite" });
         }
         self.breakpoints = points;
         Ok(self)
@@ -285,14 +285,10 @@ impl AdaptiveConfig {
     /// Set the highest Gauss–Jacobi order of the singular integrators.
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] if `n < 8`.
-    pub fn with_max_order(mut self, n: usize) -> Result<Self, QuadError> {
+    /// [`Error::OutOfDomain`] if `n < 8`.
+    pub fn with_max_order(mut self, n: usize) -> Result<Self, Error> {
         if n < 8 {
-            return Err(QuadError::OutOfDomain {
-                name: "max_order",
-                value: n as f64,
-                allowed: ">= 8",
-            });
+            return Err(Error::OutOfDomain { name: "max_order", value: n as f64, allowed: ">= 8" });
         }
         self.max_order = n;
         Ok(self)
@@ -310,10 +306,10 @@ enum Map {
 }
 
 fn eval_mapped(
-    f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut dyn FnMut(f64) -> Result<f64, Error>,
     map: Map,
     t: f64,
-) -> Result<f64, QuadError> {
+) -> Result<f64, Error> {
     match map {
         Map::Finite => f(t),
         Map::Upper(p) | Map::Lower(p) => {
@@ -327,7 +323,7 @@ fn eval_mapped(
             if g.is_finite() {
                 Ok(g)
             } else {
-                Err(QuadError::NonFinite { x, value: g })
+                Err(Error::NonFinite { x, value: g })
             }
         }
     }
@@ -357,12 +353,12 @@ pub(crate) fn neumaier_sum(xs: impl Iterator<Item = f64>) -> f64 {
 
 /// The global adaptive loop over already-mapped pieces.
 fn adaptive_core(
-    f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut dyn FnMut(f64) -> Result<f64, Error>,
     segments: &[(f64, f64, Map)],
     tol: Tolerance,
     max_subdivisions: usize,
     rule: KronrodRule,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     let per = rule.points();
     let mut evals = 0;
     let mut pieces: Vec<Piece> = Vec::with_capacity(max_subdivisions.max(segments.len()) + 1);
@@ -387,10 +383,10 @@ fn adaptive_core(
             .max_by(|x, y| x.1.error.total_cmp(&y.1.error))
             .map(|(i, _)| i);
         let Some(i) = worst else {
-            return Err(QuadError::NotConverged { estimate: est, requested: tol.target(total) });
+            return Err(Error::NotConverged { estimate: est, requested: tol.target(total) });
         };
         if pieces.len() >= max_subdivisions {
-            return Err(QuadError::NotConverged { estimate: est, requested: tol.target(total) });
+            return Err(Error::NotConverged { estimate: est, requested: tol.target(total) });
         }
         let p = pieces[i];
         let mid = 0.5 * (p.a + p.b);
@@ -411,14 +407,14 @@ fn adaptive_core(
 
 /// Split $\lbrack a,b\rbrack$ ($a<b$, either end possibly infinite) at the sorted breakpoints into mapped
 /// pieces.
-fn segments(a: f64, b: f64, breakpoints: &[f64]) -> Result<Vec<(f64, f64, Map)>, QuadError> {
+fn segments(a: f64, b: f64, breakpoints: &[f64]) -> Result<Vec<(f64, f64, Map)>, Error> {
     let mut pts: Vec<f64> = Vec::new();
     for &p in breakpoints {
         if !p.is_finite() {
-            return Err(QuadError::OutOfDomain { name: "breakpoint", value: p, allowed: "finite" });
+            return Err(Error::OutOfDomain { name: "breakpoint", value: p, allowed: "finite" });
         }
         if p < a || p > b {
-            return Err(QuadError::OutOfDomain {
+            return Err(Error::OutOfDomain {
                 name: "breakpoint",
                 value: p,
                 allowed: "inside the integration range",
@@ -459,35 +455,31 @@ fn segments(a: f64, b: f64, breakpoints: &[f64]) -> Result<Vec<(f64, f64, Map)>,
 /// subinterval estimates; the result is returned only if it meets `cfg.tol`.
 ///
 /// # Errors
-/// [`QuadError::NonFinite`] (with the physical $x$) if $f$ is NaN or infinite at a node;
-/// [`QuadError::NotConverged`] with the best estimate when `cfg.max_subdivisions` is reached or
-/// no interval can be bisected further; [`QuadError::InvalidInterval`] for NaN ends or
-/// $a = b = \pm\infty$; [`QuadError::OutOfDomain`] for a breakpoint outside $\lbrack a,b\rbrack$.
+/// [`Error::NonFinite`] (with the physical $x$) if $f$ is NaN or infinite at a node;
+/// [`Error::NotConverged`] with the best estimate when `cfg.max_subdivisions` is reached or
+/// no interval can be bisected further; [`Error::InvalidInterval`] for NaN ends or
+/// $a = b = \pm\infty$; [`Error::OutOfDomain`] for a breakpoint outside $\lbrack a,b\rbrack$.
 pub fn gauss_kronrod<F: FnMut(f64) -> f64>(
     f: F,
     a: f64,
     b: f64,
     cfg: &AdaptiveConfig,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     let mut g = checked(f);
     gauss_kronrod_checked(&mut g, a, b, cfg)
 }
 
 /// [`gauss_kronrod`] for an integrand that reports its own errors.
 pub(crate) fn gauss_kronrod_checked(
-    f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut dyn FnMut(f64) -> Result<f64, Error>,
     a: f64,
     b: f64,
     cfg: &AdaptiveConfig,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     check_ends(a, b)?;
     if a == b {
         if a.is_infinite() {
-            return Err(QuadError::InvalidInterval {
-                a,
-                b,
-                reason: "both ends are the same infinity",
-            });
+            return Err(Error::InvalidInterval { a, b, reason: "both ends are the same infinity" });
         }
         return Ok(Estimate { value: 0.0, error: 0.0, evals: 0 });
     }
@@ -496,8 +488,8 @@ pub(crate) fn gauss_kronrod_checked(
     let max = cfg.max_subdivisions.max(1);
     match adaptive_core(f, &segs, cfg.tol, max, cfg.rule) {
         Ok(e) => Ok(e.scaled(sign)),
-        Err(QuadError::NotConverged { estimate, requested }) => {
-            Err(QuadError::NotConverged { estimate: estimate.scaled(sign), requested })
+        Err(Error::NotConverged { estimate, requested }) => {
+            Err(Error::NotConverged { estimate: estimate.scaled(sign), requested })
         }
         Err(e) => Err(e),
     }

@@ -28,7 +28,7 @@ mod types;
 
 pub mod battery;
 
-pub use error::QuadError;
+pub use error::Error;
 pub use kronrod::{gauss_kronrod, AdaptiveConfig, KronrodRule};
 pub use rules::{ChebyshevKind, GaussChebyshev, GaussJacobi, GaussLegendre, Rule};
 pub use singular::{algebraic_endpoints, cauchy_pv, weakly_singular, weakly_singular_weighted};

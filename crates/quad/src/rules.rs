@@ -17,7 +17,7 @@ use std::f64::consts::PI;
 
 use crate::gamma::jacobi_mass;
 use crate::types::checked;
-use crate::{Estimate, QuadError};
+use crate::{Error, Estimate};
 
 /// Common interface of the fixed rules.
 pub trait Rule {
@@ -29,14 +29,14 @@ pub trait Rule {
     /// honest error estimate described in the [module docs](self).
     ///
     /// # Errors
-    /// [`QuadError::NonFinite`] if the integrand is NaN or infinite at a node;
-    /// [`QuadError::InvalidInterval`] for unusable ends (see each rule).
-    fn integrate<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<Estimate, QuadError>;
+    /// [`Error::NonFinite`] if the integrand is NaN or infinite at a node;
+    /// [`Error::InvalidInterval`] for unusable ends (see each rule).
+    fn integrate<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<Estimate, Error>;
     /// Apply the $n$-point rule only (no error estimate, $n$ evaluations).
     ///
     /// # Errors
     /// As [`Rule::integrate`].
-    fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, QuadError>;
+    fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, Error>;
 }
 
 /// Nodes and weights of one rule and of its companion.
@@ -52,10 +52,10 @@ struct Pair {
 fn apply(
     nodes: &[f64],
     weights: &[f64],
-    f: &mut impl FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut impl FnMut(f64) -> Result<f64, Error>,
     c: f64,
     h: f64,
-) -> Result<(f64, f64), QuadError> {
+) -> Result<(f64, f64), Error> {
     let mut s = 0.0;
     let mut sa = 0.0;
     for (&t, &w) in nodes.iter().zip(weights) {
@@ -69,11 +69,11 @@ fn apply(
 impl Pair {
     fn estimate(
         &self,
-        f: &mut impl FnMut(f64) -> Result<f64, QuadError>,
+        f: &mut impl FnMut(f64) -> Result<f64, Error>,
         c: f64,
         h: f64,
         scale: f64,
-    ) -> Result<Estimate, QuadError> {
+    ) -> Result<Estimate, Error> {
         let (q, qa) = apply(&self.nodes, &self.weights, f, c, h)?;
         let (ql, _) = apply(&self.lo_nodes, &self.lo_weights, f, c, h)?;
         let value = scale * q;
@@ -111,7 +111,7 @@ fn legendre_theta(n: usize, u: f64) -> (f64, f64) {
 /// $$w_k = \frac{2}{(1-x_k^2)P_n'(x_k)^2} = \frac{2\sin^2\theta_k}{n^2\,(P_{n-1} - x_kP_n)^2},$$
 /// computed from $\theta_k$ so that they keep full relative accuracy near $\pm1$.
 /// Cost $O(n^2)$ (about 5 ms at $n = 1000$).
-fn legendre(n: usize) -> Result<(Vec<f64>, Vec<f64>), QuadError> {
+fn legendre(n: usize) -> Result<(Vec<f64>, Vec<f64>), Error> {
     let mut xs = vec![0.0; n];
     let mut ws = vec![0.0; n];
     let nf = n as f64;
@@ -140,7 +140,7 @@ fn legendre(n: usize) -> Result<(Vec<f64>, Vec<f64>), QuadError> {
                 polish = dth.abs() <= 1e-9 * th;
             }
             if !converged || !th.is_finite() {
-                return Err(QuadError::RuleConstruction { rule: "Gauss-Legendre", n });
+                return Err(Error::RuleConstruction { rule: "Gauss-Legendre", n });
             }
             (th, 2.0 * (0.5 * th).sin().powi(2), th.sin())
         };
@@ -155,7 +155,7 @@ fn legendre(n: usize) -> Result<(Vec<f64>, Vec<f64>), QuadError> {
     }
     // Sanity: strictly increasing nodes.
     if xs.windows(2).any(|p| p[0] >= p[1]) && n > 1 {
-        return Err(QuadError::RuleConstruction { rule: "Gauss-Legendre", n });
+        return Err(Error::RuleConstruction { rule: "Gauss-Legendre", n });
     }
     Ok((xs, ws))
 }
@@ -177,10 +177,10 @@ impl GaussLegendre {
     /// Plan the $n$-point rule (and its $\lfloor n/2\rfloor$-point companion).
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] if $n = 0$.
-    pub fn new(n: usize) -> Result<Self, QuadError> {
+    /// [`Error::OutOfDomain`] if $n = 0$.
+    pub fn new(n: usize) -> Result<Self, Error> {
         if n == 0 {
-            return Err(QuadError::OutOfDomain { name: "n", value: 0.0, allowed: ">= 1" });
+            return Err(Error::OutOfDomain { name: "n", value: 0.0, allowed: ">= 1" });
         }
         let (nodes, weights) = legendre(n)?;
         let (lo_nodes, lo_weights) = if n >= 2 { legendre(n / 2)? } else { (vec![], vec![]) };
@@ -200,7 +200,7 @@ impl GaussLegendre {
     }
 }
 
-fn affine(a: f64, b: f64) -> Result<Option<(f64, f64)>, QuadError> {
+fn affine(a: f64, b: f64) -> Result<Option<(f64, f64)>, Error> {
     crate::types::check_finite_ends(a, b)?;
     if a == b {
         return Ok(None);
@@ -215,13 +215,13 @@ impl Rule for GaussLegendre {
     fn weights(&self) -> &[f64] {
         &self.pair.weights
     }
-    fn integrate<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<Estimate, QuadError> {
+    fn integrate<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<Estimate, Error> {
         let Some((c, h)) = affine(a, b)? else {
             return Ok(Estimate { value: 0.0, error: 0.0, evals: 0 });
         };
         self.pair.estimate(&mut checked(f), c, h, h)
     }
-    fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, QuadError> {
+    fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, Error> {
         let Some((c, h)) = affine(a, b)? else { return Ok(0.0) };
         Ok(h * apply(&self.pair.nodes, &self.pair.weights, &mut checked(f), c, h)?.0)
     }
@@ -346,12 +346,12 @@ fn orthonormal_eval(t: f64, a: &[f64], b: &[f64]) -> (f64, f64, f64) {
 /// Gauss–Jacobi nodes and weights for $(1-t)^\alpha(1+t)^\beta$ on $[-1,1]$, ascending:
 /// Golub–Welsch eigenvalues, one or two Newton steps on the orthonormal recurrence, and
 /// Christoffel weights $w_i = \mu_0 / \sum_{j<n} p_j(t_i)^2$.
-fn jacobi(n: usize, alpha: f64, beta: f64) -> Result<(Vec<f64>, Vec<f64>), QuadError> {
+fn jacobi(n: usize, alpha: f64, beta: f64) -> Result<(Vec<f64>, Vec<f64>), Error> {
     let (a, b) = jacobi_coefficients(n, alpha, beta);
     let mut d = a.clone();
     let mut e: Vec<f64> = b.clone();
     if !tridiagonal_eigenvalues(&mut d, &mut e) {
-        return Err(QuadError::RuleConstruction { rule: "Gauss-Jacobi", n });
+        return Err(Error::RuleConstruction { rule: "Gauss-Jacobi", n });
     }
     d.sort_by(f64::total_cmp);
     let mu0 = jacobi_mass(alpha, beta);
@@ -384,7 +384,7 @@ fn jacobi(n: usize, alpha: f64, beta: f64) -> Result<(Vec<f64>, Vec<f64>), QuadE
         || (n > 1 && d.windows(2).any(|p| p[0] >= p[1]))
         || d.iter().any(|&t| t.abs() >= 1.0)
     {
-        return Err(QuadError::RuleConstruction { rule: "Gauss-Jacobi", n });
+        return Err(Error::RuleConstruction { rule: "Gauss-Jacobi", n });
     }
     Ok((d, ws))
 }
@@ -411,15 +411,15 @@ impl GaussJacobi {
     /// Plan the rule.
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] if $n = 0$, or $\alpha \le -1$, or $\beta \le -1$ (or either
+    /// [`Error::OutOfDomain`] if $n = 0$, or $\alpha \le -1$, or $\beta \le -1$ (or either
     /// is not finite).
-    pub fn new(n: usize, alpha: f64, beta: f64) -> Result<Self, QuadError> {
+    pub fn new(n: usize, alpha: f64, beta: f64) -> Result<Self, Error> {
         if n == 0 {
-            return Err(QuadError::OutOfDomain { name: "n", value: 0.0, allowed: ">= 1" });
+            return Err(Error::OutOfDomain { name: "n", value: 0.0, allowed: ">= 1" });
         }
         for (name, v) in [("alpha", alpha), ("beta", beta)] {
             if !(v.is_finite() && v > -1.0) {
-                return Err(QuadError::OutOfDomain { name, value: v, allowed: "> -1, finite" });
+                return Err(Error::OutOfDomain { name, value: v, allowed: "> -1, finite" });
             }
         }
         let (nodes, weights) = jacobi(n, alpha, beta)?;
@@ -452,7 +452,7 @@ impl GaussJacobi {
         self.pair.nodes.is_empty()
     }
 
-    fn scale(&self, a: f64, b: f64) -> Result<(f64, f64, f64), QuadError> {
+    fn scale(&self, a: f64, b: f64) -> Result<(f64, f64, f64), Error> {
         crate::types::check_ordered(a, b)?;
         let h = 0.5 * (b - a);
         Ok((0.5 * (a + b), h, h.powf(self.alpha + self.beta + 1.0)))
@@ -475,11 +475,11 @@ macro_rules! weighted_rule {
                 f: F,
                 a: f64,
                 b: f64,
-            ) -> Result<Estimate, QuadError> {
+            ) -> Result<Estimate, Error> {
                 let (c, h, s) = self.scale(a, b)?;
                 self.pair.estimate(&mut checked(f), c, h, s)
             }
-            fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, QuadError> {
+            fn sum<F: FnMut(f64) -> f64>(&self, f: F, a: f64, b: f64) -> Result<f64, Error> {
                 let (c, h, s) = self.scale(a, b)?;
                 Ok(s * apply(&self.pair.nodes, &self.pair.weights, &mut checked(f), c, h)?.0)
             }
@@ -538,9 +538,9 @@ pub struct GaussChebyshev {
 }
 
 impl GaussChebyshev {
-    fn build(n: usize, kind: ChebyshevKind) -> Result<Self, QuadError> {
+    fn build(n: usize, kind: ChebyshevKind) -> Result<Self, Error> {
         if n == 0 {
-            return Err(QuadError::OutOfDomain { name: "n", value: 0.0, allowed: ">= 1" });
+            return Err(Error::OutOfDomain { name: "n", value: 0.0, allowed: ">= 1" });
         }
         let (nodes, weights) = chebyshev(n, kind);
         let (lo_nodes, lo_weights) = chebyshev(n / 2, kind);
@@ -550,16 +550,16 @@ impl GaussChebyshev {
     /// $n$-point rule of the first kind (weight $1/\sqrt{(b-x)(x-a)}$).
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] if $n = 0$.
-    pub fn first_kind(n: usize) -> Result<Self, QuadError> {
+    /// [`Error::OutOfDomain`] if $n = 0$.
+    pub fn first_kind(n: usize) -> Result<Self, Error> {
         Self::build(n, ChebyshevKind::First)
     }
 
     /// $n$-point rule of the second kind (weight $\sqrt{(b-x)(x-a)}$).
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] if $n = 0$.
-    pub fn second_kind(n: usize) -> Result<Self, QuadError> {
+    /// [`Error::OutOfDomain`] if $n = 0$.
+    pub fn second_kind(n: usize) -> Result<Self, Error> {
         Self::build(n, ChebyshevKind::Second)
     }
 
@@ -569,7 +569,7 @@ impl GaussChebyshev {
         self.kind
     }
 
-    fn scale(&self, a: f64, b: f64) -> Result<(f64, f64, f64), QuadError> {
+    fn scale(&self, a: f64, b: f64) -> Result<(f64, f64, f64), Error> {
         crate::types::check_ordered(a, b)?;
         let h = 0.5 * (b - a);
         let s = match self.kind {
@@ -586,10 +586,10 @@ weighted_rule!(GaussChebyshev);
 /// integrand (returns value and $\sum|w f|$ scaled).
 pub(crate) fn jacobi_apply(
     rule: &GaussJacobi,
-    f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut dyn FnMut(f64) -> Result<f64, Error>,
     a: f64,
     b: f64,
-) -> Result<(f64, f64), QuadError> {
+) -> Result<(f64, f64), Error> {
     let (c, h, s) = rule.scale(a, b)?;
     let mut g = |x: f64| f(x);
     let (q, qa) = apply(&rule.pair.nodes, &rule.pair.weights, &mut g, c, h)?;

@@ -17,7 +17,7 @@
 //! to another one (e.g. $x$ at $5\cdot10^{-4}$ from $b$) costs no accuracy. The error of a
 //! Jacobi sum has the floor $10\varepsilon\sum|w_i f_i|$; when two orders agree to within that
 //! floor and the tolerance is still not met, the request is below rounding and the integrator
-//! stops with [`QuadError::NotConverged`] instead of subdividing. A piece that does not converge
+//! stops with [`Error::NotConverged`] instead of subdividing. A piece that does not converge
 //! keeps its estimate, which is added to the others: a `NotConverged` always carries the whole
 //! integral with an error bound that covers its true error.
 
@@ -28,7 +28,7 @@ use std::rc::Rc;
 use crate::kronrod::gauss_kronrod_checked;
 use crate::rules::{jacobi_apply, GaussJacobi};
 use crate::types::{check_ordered, checked};
-use crate::{AdaptiveConfig, Estimate, QuadError, Tolerance};
+use crate::{AdaptiveConfig, Error, Estimate, Tolerance};
 
 thread_local! {
     /// Planned Jacobi rules, keyed by (n, alpha bits, beta bits). Bounded: cleared when large.
@@ -36,7 +36,7 @@ thread_local! {
         RefCell::new(HashMap::new());
 }
 
-fn cached_jacobi(n: usize, alpha: f64, beta: f64) -> Result<Rc<GaussJacobi>, QuadError> {
+fn cached_jacobi(n: usize, alpha: f64, beta: f64) -> Result<Rc<GaussJacobi>, Error> {
     let key = (n, alpha.to_bits(), beta.to_bits());
     if let Some(r) = RULES.with(|c| c.borrow().get(&key).cloned()) {
         return Ok(r);
@@ -52,9 +52,9 @@ fn cached_jacobi(n: usize, alpha: f64, beta: f64) -> Result<Rc<GaussJacobi>, Qua
     Ok(r)
 }
 
-fn check_exponent(name: &'static str, v: f64) -> Result<(), QuadError> {
+fn check_exponent(name: &'static str, v: f64) -> Result<(), Error> {
     if !(v.is_finite() && v > -1.0) {
-        return Err(QuadError::OutOfDomain { name, value: v, allowed: "> -1, finite" });
+        return Err(Error::OutOfDomain { name, value: v, allowed: "> -1, finite" });
     }
     Ok(())
 }
@@ -88,32 +88,27 @@ impl Part {
     }
 
     /// The public result: `Ok` only for a converged part that meets `tol`.
-    fn finish(self, tol: Tolerance) -> Result<Estimate, QuadError> {
+    fn finish(self, tol: Tolerance) -> Result<Estimate, Error> {
         if self.converged && tol.accepts(self.est.value, self.est.error) {
             Ok(self.est)
         } else {
-            Err(QuadError::NotConverged {
-                estimate: self.est,
-                requested: tol.target(self.est.value),
-            })
+            Err(Error::NotConverged { estimate: self.est, requested: tol.target(self.est.value) })
         }
     }
 }
 
 /// Adaptive Gauss–Kronrod on a regular piece, a `NotConverged` outcome kept as a [`Part`].
 fn regular_piece(
-    g: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    g: &mut dyn FnMut(f64) -> Result<f64, Error>,
     lo: f64,
     hi: f64,
     cfg: &AdaptiveConfig,
     tol: Tolerance,
-) -> Result<Part, QuadError> {
+) -> Result<Part, Error> {
     let c = AdaptiveConfig { tol, breakpoints: Vec::new(), ..cfg.clone() };
     match gauss_kronrod_checked(g, lo, hi, &c) {
         Ok(est) => Ok(Part { est, converged: true }),
-        Err(QuadError::NotConverged { estimate, .. }) => {
-            Ok(Part { est: estimate, converged: false })
-        }
+        Err(Error::NotConverged { estimate, .. }) => Ok(Part { est: estimate, converged: false }),
         Err(e) => Err(e),
     }
 }
@@ -125,13 +120,13 @@ fn regular_piece(
 /// misses `tol` comes back as a non-converged [`Part`] carrying the best estimate of the WHOLE
 /// of $[0, L]$.
 fn end_piece(
-    g: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    g: &mut dyn FnMut(f64) -> Result<f64, Error>,
     len: f64,
     gamma: f64,
     cfg: &AdaptiveConfig,
     tol: Tolerance,
     depth: usize,
-) -> Result<Part, QuadError> {
+) -> Result<Part, Error> {
     if gamma == 0.0 {
         return regular_piece(g, 0.0, len, cfg, tol);
     }
@@ -177,7 +172,7 @@ fn end_piece(
     let cut = 0.125 * len;
     let half = Tolerance { abs: 0.5 * tol.abs, rel: tol.rel };
     let inner = end_piece(g, cut, gamma, cfg, half, depth + 1)?;
-    let mut weighted = |u: f64| -> Result<f64, QuadError> { Ok(g(u)? * u.powf(gamma)) };
+    let mut weighted = |u: f64| -> Result<f64, Error> { Ok(g(u)? * u.powf(gamma)) };
     let rest = regular_piece(&mut weighted, cut, len, cfg, half)?;
     let mut split = inner.join_checked(rest, tol);
     split.est.evals += evals;
@@ -207,7 +202,7 @@ struct Factor {
 /// $\varepsilon|s|/d$ in $s - p$ (2e-13 for $d = 5\cdot10^{-4}$), while $u$ is exact to
 /// $\varepsilon u$. Only the caller's smooth $f$ sees $s$.
 fn half_piece(
-    f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut dyn FnMut(f64) -> Result<f64, Error>,
     anchor: f64,
     dir: f64,
     len: f64,
@@ -215,13 +210,13 @@ fn half_piece(
     others: &[Factor],
     cfg: &AdaptiveConfig,
     tol: Tolerance,
-) -> Result<Part, QuadError> {
+) -> Result<Part, Error> {
     if len == 0.0 {
         return Ok(Part::ZERO);
     }
     let offsets: Vec<(f64, f64)> =
         others.iter().filter(|q| q.e != 0.0).map(|q| (anchor - q.p, q.e)).collect();
-    let mut g = |u: f64| -> Result<f64, QuadError> {
+    let mut g = |u: f64| -> Result<f64, Error> {
         let mut v = f(anchor + dir * u)?;
         for &(d, e) in &offsets {
             v *= (d + dir * u).abs().powf(e);
@@ -229,7 +224,7 @@ fn half_piece(
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(QuadError::NonFinite { x: anchor + dir * u, value: v })
+            Err(Error::NonFinite { x: anchor + dir * u, value: v })
         }
     };
     end_piece(&mut g, len, gamma, cfg, tol, 0)
@@ -242,11 +237,11 @@ fn half_piece(
 /// gap), and each half is a [`half_piece`] anchored at its singular end. The halves share the
 /// tolerance: relative part unchanged, absolute part divided by their number.
 fn singular_sum(
-    f: &mut dyn FnMut(f64) -> Result<f64, QuadError>,
+    f: &mut dyn FnMut(f64) -> Result<f64, Error>,
     cuts: &[Factor],
     outside: &[Factor],
     cfg: &AdaptiveConfig,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     let halves = 2 * (cuts.len() - 1);
     let share = Tolerance { abs: cfg.tol.abs / halves as f64, rel: cfg.tol.rel };
     let all: Vec<Factor> = cuts.iter().chain(outside).copied().collect();
@@ -278,8 +273,8 @@ fn singular_sum(
 /// the regular parts); `cfg.breakpoints` is ignored.
 ///
 /// # Errors
-/// [`QuadError::InvalidInterval`] unless $a<b$ finite; [`QuadError::OutOfDomain`] for
-/// $\alpha \le -1$ or $\beta \le -1$; [`QuadError::NonFinite`]; [`QuadError::NotConverged`].
+/// [`Error::InvalidInterval`] unless $a<b$ finite; [`Error::OutOfDomain`] for
+/// $\alpha \le -1$ or $\beta \le -1$; [`Error::NonFinite`]; [`Error::NotConverged`].
 pub fn algebraic_endpoints<F: FnMut(f64) -> f64>(
     f: F,
     a: f64,
@@ -287,7 +282,7 @@ pub fn algebraic_endpoints<F: FnMut(f64) -> f64>(
     alpha: f64,
     beta: f64,
     cfg: &AdaptiveConfig,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     check_ordered(a, b)?;
     check_exponent("alpha", alpha)?;
     check_exponent("beta", beta)?;
@@ -309,7 +304,7 @@ pub fn weakly_singular<F: FnMut(f64) -> f64>(
     x: f64,
     k: f64,
     cfg: &AdaptiveConfig,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     weakly_singular_weighted(f, a, b, x, k, 0.0, 0.0, cfg)
 }
 
@@ -321,9 +316,9 @@ pub fn weakly_singular<F: FnMut(f64) -> f64>(
 /// nearby $x$ is handled by the end subdivision).
 ///
 /// # Errors
-/// [`QuadError::InvalidInterval`] unless $a<b$ finite; [`QuadError::OutOfDomain`] for $k$
-/// outside $[0,1)$, non-finite $x$, or an exponent $\le -1$; [`QuadError::NonFinite`];
-/// [`QuadError::NotConverged`].
+/// [`Error::InvalidInterval`] unless $a<b$ finite; [`Error::OutOfDomain`] for $k$
+/// outside $[0,1)$, non-finite $x$, or an exponent $\le -1$; [`Error::NonFinite`];
+/// [`Error::NotConverged`].
 pub fn weakly_singular_weighted<F: FnMut(f64) -> f64>(
     f: F,
     a: f64,
@@ -333,13 +328,13 @@ pub fn weakly_singular_weighted<F: FnMut(f64) -> f64>(
     alpha: f64,
     beta: f64,
     cfg: &AdaptiveConfig,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     check_ordered(a, b)?;
     if !(k.is_finite() && (0.0..1.0).contains(&k)) {
-        return Err(QuadError::OutOfDomain { name: "k", value: k, allowed: "0 <= k < 1" });
+        return Err(Error::OutOfDomain { name: "k", value: k, allowed: "0 <= k < 1" });
     }
     if !x.is_finite() {
-        return Err(QuadError::OutOfDomain { name: "x", value: x, allowed: "finite" });
+        return Err(Error::OutOfDomain { name: "x", value: x, allowed: "finite" });
     }
     check_exponent("alpha", alpha)?;
     check_exponent("beta", beta)?;
@@ -375,23 +370,23 @@ pub fn weakly_singular_weighted<F: FnMut(f64) -> f64>(
 /// $x$ arbitrarily close to an end (the logarithm is exact).
 ///
 /// # Errors
-/// [`QuadError::InvalidInterval`] unless $a<b$ finite; [`QuadError::OutOfDomain`] unless
-/// $a<x<b$; [`QuadError::NonFinite`]; [`QuadError::NotConverged`].
+/// [`Error::InvalidInterval`] unless $a<b$ finite; [`Error::OutOfDomain`] unless
+/// $a<x<b$; [`Error::NonFinite`]; [`Error::NotConverged`].
 pub fn cauchy_pv<F: FnMut(f64) -> f64>(
     f: F,
     a: f64,
     b: f64,
     x: f64,
     cfg: &AdaptiveConfig,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     check_ordered(a, b)?;
     if !(x > a && x < b) {
-        return Err(QuadError::OutOfDomain { name: "x", value: x, allowed: "a < x < b" });
+        return Err(Error::OutOfDomain { name: "x", value: x, allowed: "a < x < b" });
     }
     let mut f = checked(f);
     let fx = f(x)?;
     let log = ((b - x) / (x - a)).ln();
-    let mut g = |t: f64| -> Result<f64, QuadError> {
+    let mut g = |t: f64| -> Result<f64, Error> {
         if t == x {
             return Ok(0.0);
         }
@@ -399,7 +394,7 @@ pub fn cauchy_pv<F: FnMut(f64) -> f64>(
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(QuadError::NonFinite { x: t, value: v })
+            Err(Error::NonFinite { x: t, value: v })
         }
     };
     let mut bps = cfg.breakpoints.clone();
@@ -417,12 +412,12 @@ pub fn cauchy_pv<F: FnMut(f64) -> f64>(
             if cfg.tol.accepts(e.value, e.error) {
                 Ok(e)
             } else {
-                Err(QuadError::NotConverged { estimate: e, requested: cfg.tol.target(e.value) })
+                Err(Error::NotConverged { estimate: e, requested: cfg.tol.target(e.value) })
             }
         }
-        Err(QuadError::NotConverged { estimate, .. }) => {
+        Err(Error::NotConverged { estimate, .. }) => {
             let e = add(estimate);
-            Err(QuadError::NotConverged { estimate: e, requested: cfg.tol.target(e.value) })
+            Err(Error::NotConverged { estimate: e, requested: cfg.tol.target(e.value) })
         }
         Err(e) => Err(e),
     }

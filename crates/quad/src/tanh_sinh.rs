@@ -6,7 +6,7 @@
 //! wrapper removes:
 //!
 //! * it replaces a non-finite integrand value by $0$. Here every value passes through a check
-//!   and the first non-finite one is returned as [`QuadError::NonFinite`];
+//!   and the first non-finite one is returned as [`Error::NonFinite`];
 //! * its error estimate ignores the truncation of the $\tau$ range at $\pm3$ (the outermost
 //!   nodes lie $\delta \approx 4.3\times10^{-14}\,h$ from the ends, $h = (b-a)/2$) and can be optimistic.
 //!   Here the estimate is
@@ -21,7 +21,7 @@
 use std::cell::{Cell, RefCell};
 
 use crate::types::check_finite_ends;
-use crate::{Estimate, QuadError, Tolerance};
+use crate::{Error, Estimate, Tolerance};
 
 /// $1 - \tanh(\tfrac{\pi}{2}\sinh 3)$: distance of the crate's outermost node from $\pm1$.
 fn end_gap() -> f64 {
@@ -42,17 +42,17 @@ fn end_gap() -> f64 {
 ///
 /// Suited to analytic integrands and to mild end singularities (e.g. $\sqrt{1-x^2}$, $\ln x$);
 /// strong ones such as $x^{-1/2}$ are beyond the fixed $\tau$ range and come back as
-/// [`QuadError::NotConverged`] rather than as a wrong number.
+/// [`Error::NotConverged`] rather than as a wrong number.
 ///
 /// # Errors
-/// [`QuadError::NonFinite`], [`QuadError::NotConverged`] (best estimate attached),
-/// [`QuadError::InvalidInterval`] for NaN or infinite ends.
+/// [`Error::NonFinite`], [`Error::NotConverged`] (best estimate attached),
+/// [`Error::InvalidInterval`] for NaN or infinite ends.
 pub fn tanh_sinh<F: FnMut(f64) -> f64>(
     f: F,
     a: f64,
     b: f64,
     tol: Tolerance,
-) -> Result<Estimate, QuadError> {
+) -> Result<Estimate, Error> {
     check_finite_ends(a, b)?;
     if a == b {
         return Ok(Estimate { value: 0.0, error: 0.0, evals: 0 });
@@ -73,7 +73,7 @@ pub fn tanh_sinh<F: FnMut(f64) -> f64>(
             0.0
         }
     };
-    let fail = || bad.get().map(|(x, value)| QuadError::NonFinite { x, value });
+    let fail = || bad.get().map(|(x, value)| Error::NonFinite { x, value });
 
     // Magnitude probe (first convergence check of the crate, ~13 evaluations).
     let probe = quadrature::integrate(g, lo, hi, f64::INFINITY);
@@ -104,7 +104,7 @@ pub fn tanh_sinh<F: FnMut(f64) -> f64>(
         + 10.0 * f64::EPSILON * value.abs();
     let est = Estimate { value: sign * value, error, evals: evals.get() };
     if !error.is_finite() || !tol.accepts(value, error) {
-        return Err(QuadError::NotConverged { estimate: est, requested: tol.target(value) });
+        return Err(Error::NotConverged { estimate: est, requested: tol.target(value) });
     }
     Ok(est)
 }

@@ -1,6 +1,6 @@
 //! Result and tolerance types shared by every integrator.
 
-use crate::QuadError;
+use crate::Error;
 
 /// The outcome of a quadrature: value, error estimate and cost.
 ///
@@ -36,12 +36,18 @@ impl Estimate {
 
 /// A requested accuracy: the answer is accepted when
 /// $$|I - Q| \le \max(\text{abs},\ \text{rel}\,|Q|).$$
+///
+/// The one tolerance type of the workspace: every solver that takes an accuracy request takes
+/// a `Tolerance` and states the range it supports (e.g.
+/// `stickslip_traction::FastConfig::TOLERANCE_RANGE`), refusing a request outside it with a
+/// typed error instead of clamping it. The fields are private: a `Tolerance` is always valid
+/// ([`Tolerance::new`], [`Tolerance::relative`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerance {
     /// Absolute tolerance, $\ge 0$.
-    pub abs: f64,
+    pub(crate) abs: f64,
     /// Relative tolerance, $\ge 0$.
-    pub rel: f64,
+    pub(crate) rel: f64,
 }
 
 impl Tolerance {
@@ -53,24 +59,16 @@ impl Tolerance {
     /// be positive; if `abs == 0`, `rel` must be at least [`Tolerance::MIN_REL`].
     ///
     /// # Errors
-    /// [`QuadError::OutOfDomain`] naming the offending part.
-    pub fn new(abs: f64, rel: f64) -> Result<Self, QuadError> {
+    /// [`Error::OutOfDomain`] naming the offending part.
+    pub fn new(abs: f64, rel: f64) -> Result<Self, Error> {
         if !(abs.is_finite() && abs >= 0.0) {
-            return Err(QuadError::OutOfDomain {
-                name: "abs",
-                value: abs,
-                allowed: "finite, >= 0",
-            });
+            return Err(Error::OutOfDomain { name: "abs", value: abs, allowed: "finite, >= 0" });
         }
         if !(rel.is_finite() && rel >= 0.0) {
-            return Err(QuadError::OutOfDomain {
-                name: "rel",
-                value: rel,
-                allowed: "finite, >= 0",
-            });
+            return Err(Error::OutOfDomain { name: "rel", value: rel, allowed: "finite, >= 0" });
         }
         if abs == 0.0 && rel < Self::MIN_REL {
-            return Err(QuadError::OutOfDomain {
+            return Err(Error::OutOfDomain {
                 name: "rel",
                 value: rel,
                 allowed: ">= 1e-15 when abs = 0",
@@ -83,8 +81,20 @@ impl Tolerance {
     ///
     /// # Errors
     /// As [`Tolerance::new`].
-    pub fn relative(rel: f64) -> Result<Self, QuadError> {
+    pub fn relative(rel: f64) -> Result<Self, Error> {
         Self::new(0.0, rel)
+    }
+
+    /// The absolute part, $\ge 0$.
+    #[must_use]
+    pub fn abs(&self) -> f64 {
+        self.abs
+    }
+
+    /// The relative part, $\ge 0$.
+    #[must_use]
+    pub fn rel(&self) -> f64 {
+        self.rel
     }
 
     /// Absolute error accepted for an answer of size `value`: $\max(\text{abs}, \text{rel}|Q|)$.
@@ -107,40 +117,40 @@ impl Default for Tolerance {
     }
 }
 
-/// Wrap a plain integrand so that a non-finite value becomes [`QuadError::NonFinite`].
-pub(crate) fn checked<F: FnMut(f64) -> f64>(mut f: F) -> impl FnMut(f64) -> Result<f64, QuadError> {
+/// Wrap a plain integrand so that a non-finite value becomes [`Error::NonFinite`].
+pub(crate) fn checked<F: FnMut(f64) -> f64>(mut f: F) -> impl FnMut(f64) -> Result<f64, Error> {
     move |x| {
         let v = f(x);
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(QuadError::NonFinite { x, value: v })
+            Err(Error::NonFinite { x, value: v })
         }
     }
 }
 
 /// Reject NaN ends.
-pub(crate) fn check_ends(a: f64, b: f64) -> Result<(), QuadError> {
+pub(crate) fn check_ends(a: f64, b: f64) -> Result<(), Error> {
     if a.is_nan() || b.is_nan() {
-        return Err(QuadError::InvalidInterval { a, b, reason: "an end is NaN" });
+        return Err(Error::InvalidInterval { a, b, reason: "an end is NaN" });
     }
     Ok(())
 }
 
 /// Reject infinite or NaN ends, for methods that need a finite interval.
-pub(crate) fn check_finite_ends(a: f64, b: f64) -> Result<(), QuadError> {
+pub(crate) fn check_finite_ends(a: f64, b: f64) -> Result<(), Error> {
     check_ends(a, b)?;
     if !(a.is_finite() && b.is_finite()) {
-        return Err(QuadError::InvalidInterval { a, b, reason: "ends must be finite" });
+        return Err(Error::InvalidInterval { a, b, reason: "ends must be finite" });
     }
     Ok(())
 }
 
 /// Reject anything but a finite interval with `a < b`.
-pub(crate) fn check_ordered(a: f64, b: f64) -> Result<(), QuadError> {
+pub(crate) fn check_ordered(a: f64, b: f64) -> Result<(), Error> {
     check_finite_ends(a, b)?;
     if a >= b {
-        return Err(QuadError::InvalidInterval {
+        return Err(Error::InvalidInterval {
             a,
             b,
             reason: "this method needs a < b (its weight is defined through x - a and b - x)",

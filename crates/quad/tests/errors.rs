@@ -2,8 +2,8 @@
 
 use stickslip_quad::{
     algebraic_endpoints, cauchy_pv, gauss_kronrod, tanh_sinh, weakly_singular,
-    weakly_singular_weighted, AdaptiveConfig, GaussChebyshev, GaussJacobi, GaussLegendre,
-    QuadError, Rule, Tolerance,
+    weakly_singular_weighted, AdaptiveConfig, Error, GaussChebyshev, GaussJacobi, GaussLegendre,
+    Rule, Tolerance,
 };
 
 fn cfg() -> AdaptiveConfig {
@@ -17,7 +17,7 @@ fn cfg() -> AdaptiveConfig {
 fn nan_is_reported_by_every_method() {
     let band = |x: f64| if (x - 0.3).abs() < 0.05 { f64::NAN } else { x.cos() };
     let c = cfg();
-    let mut results: Vec<(&str, Result<_, QuadError>)> = vec![
+    let mut results: Vec<(&str, Result<_, Error>)> = vec![
         ("gauss_kronrod", gauss_kronrod(band, 0.0, 1.0, &c)),
         (
             "gauss_kronrod inf",
@@ -58,7 +58,7 @@ fn nan_is_reported_by_every_method() {
     for (name, r) in results {
         println!("{name}: {r:?}");
         assert!(
-            matches!(r, Err(QuadError::NonFinite { .. })),
+            matches!(r, Err(Error::NonFinite { .. })),
             "{name} did not report NonFinite: {r:?}"
         );
     }
@@ -80,7 +80,7 @@ fn not_converged_carries_the_estimate() {
     let r = gauss_kronrod(|x| (100.0 * x).sin() / (1.0 + x * x), 0.0, 3.0, &c);
     println!("max_subdivisions = 1: {r:?}");
     match r {
-        Err(QuadError::NotConverged { estimate, requested }) => {
+        Err(Error::NotConverged { estimate, requested }) => {
             assert!(estimate.error > requested);
             assert_eq!(estimate.evals, 21);
             assert!(estimate.value.is_finite());
@@ -91,21 +91,21 @@ fn not_converged_carries_the_estimate() {
     let c = c.with_max_order(8).unwrap();
     let r = weakly_singular(|s| (40.0 * s).cos(), -1.0, 1.0, 0.2, 0.9, &c);
     println!("weakly_singular capped: {r:?}");
-    assert!(matches!(r, Err(QuadError::NotConverged { .. })));
+    assert!(matches!(r, Err(Error::NotConverged { .. })));
     let r = tanh_sinh(|x| x.powf(-0.95), 0.0, 1.0, Tolerance::relative(1e-10).unwrap());
     println!("tanh_sinh x^-0.95: {r:?}");
-    assert!(matches!(r, Err(QuadError::NotConverged { .. })));
+    assert!(matches!(r, Err(Error::NotConverged { .. })));
 }
 
-fn oo<T>(r: Result<T, QuadError>) -> bool {
-    matches!(r, Err(QuadError::OutOfDomain { .. }))
+fn oo<T>(r: Result<T, Error>) -> bool {
+    matches!(r, Err(Error::OutOfDomain { .. }))
 }
 
 #[test]
 fn invalid_input() {
     let c = cfg();
-    let bad_iv = |r: Result<stickslip_quad::Estimate, QuadError>| {
-        matches!(r, Err(QuadError::InvalidInterval { .. }))
+    let bad_iv = |r: Result<stickslip_quad::Estimate, Error>| {
+        matches!(r, Err(Error::InvalidInterval { .. }))
     };
     assert!(oo(GaussLegendre::new(0).map(|_| ())));
     assert!(oo(GaussJacobi::new(0, 0.0, 0.0).map(|_| ())));

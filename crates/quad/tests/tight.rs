@@ -10,7 +10,7 @@
 mod common;
 
 use stickslip_quad::battery::{problems, run, Method};
-use stickslip_quad::{weakly_singular_weighted, AdaptiveConfig, Estimate, QuadError, Tolerance};
+use stickslip_quad::{weakly_singular_weighted, AdaptiveConfig, Error, Estimate, Tolerance};
 
 const TOLS: &[f64] = &[1e-12, 1e-13, 1e-14, 1e-15];
 
@@ -45,7 +45,7 @@ enum Verdict {
 }
 
 /// Apply the property of the module docs; `Err` describes a violation.
-fn judge(r: &Result<Estimate, QuadError>, exact: f64, tol: Tolerance) -> Result<Verdict, String> {
+fn judge(r: &Result<Estimate, Error>, exact: f64, tol: Tolerance) -> Result<Verdict, String> {
     match r {
         Ok(e) => {
             let t = (e.value - exact).abs();
@@ -61,7 +61,7 @@ fn judge(r: &Result<Estimate, QuadError>, exact: f64, tol: Tolerance) -> Result<
             let ratio = if t > 0.0 { e.error / t } else { f64::INFINITY };
             Ok(Verdict::Converged { rel_err: t / exact.abs(), ratio })
         }
-        Err(QuadError::NotConverged { estimate, .. }) => {
+        Err(Error::NotConverged { estimate, .. }) => {
             let t = (estimate.value - exact).abs();
             if !(estimate.value.is_finite() && t <= estimate.error) {
                 return Err(format!(
@@ -110,7 +110,7 @@ fn weakly_singular_tight_tolerances() {
             let f = |s: f64| if fname == "cos" { s.cos() } else { 1.0 };
             let r = weakly_singular_weighted(f, -1.0, 1.0, *x, *k, *alpha, *alpha, &cfg);
             let row = format!("f={fname} k={k} alpha={alpha} x={x} rel={rel:e}");
-            if let Ok(e) | Err(QuadError::NotConverged { estimate: e, .. }) = &r {
+            if let Ok(e) | Err(Error::NotConverged { estimate: e, .. }) = &r {
                 evals += e.evals;
             }
             match judge(&r, *exact, tol) {

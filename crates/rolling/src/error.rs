@@ -1,7 +1,5 @@
 //! The crate's error type.
 
-use stickslip_quad::QuadError;
-
 /// Everything that can go wrong in this crate.
 ///
 /// Physical regimes (full slip, full stick, the elastic limit) are *results*, never errors:
@@ -37,7 +35,7 @@ pub enum Error {
         /// Abscissa in the contact \[m\].
         x: f64,
         /// The integrator's report (carries the best estimate when not converged).
-        source: QuadError,
+        source: stickslip_quad::Error,
     },
 }
 

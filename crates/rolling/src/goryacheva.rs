@@ -6,7 +6,7 @@
 //! $\delta = (\omega R - w)/w$; friction $\rho$. Contact $(-a, b)$, length $l = a + b$,
 //! centre shift $d = (b-a)/2$ (positive = forward); slip zone $(-a, c)$ at the trailing edge,
 //! stick zone $(c, b)$ of length $m = b - c$. Sign conventions and negative creep are as in
-//! [`crate::carter`](mod@crate::carter) ($\rho_s = \rho\,\mathrm{sign}\,\delta$).
+//! [`crate::carter`](mod@crate::carter) ($\signed_friction = \rho\,\mathrm{sign}\,\delta$).
 //!
 //! # How the equations are solved
 //! All equations are taken from Goryacheva, PMM 37(5) 1973 (seed 001), in the corrected forms
@@ -33,18 +33,18 @@
 //! **Shift (eq 20)** with the root inserted: $d = (\alpha-\beta)w\,\varphi(l)$,
 //! $\varphi(z) = \dfrac{r k}{1 + r k}$ at $x_1 = z/(2\beta w)$, $x_2 = z/(2\alpha w)$; so $d > 0$.
 //!
-//! **Stick length (eq 24).** Divided by $I_0(y_1)K_1(y_2)$ and multiplied by $2R/\rho_s$, with
+//! **Stick length (eq 24).** Divided by $I_0(y_1)K_1(y_2)$ and multiplied by $2R/\signed_friction$, with
 //! $e = 2|\delta|R/\rho$ (Carter's slip length):
 //! $$f(m) = (l + 2d - e) - m - 2(\alpha-\beta)w\,\varphi(m) = 0 .$$
 //! $m + 2(\alpha-\beta)w\varphi(m)$ increases strictly ($r$ and $k$ increase),
 //! $f(0^+) = l + 2d - e$ and $f(l) = -e$: a unique root in $(0, l]$ exists iff $0 < e < l + 2d$. $e \ge l + 2d$ is
-//! full slip ($m = 0$, $Q = -\rho_s P$), $\delta = 0$ full stick ($m = l$, $Q = 0$).
+//! full slip ($m = 0$, $Q = -\signed_friction P$), $\delta = 0$ full stick ($m = l$, $Q = 0$).
 //!
 //! **Constants.** Eqs 25, 27 and 28 with the roots inserted are rearranged so that no
 //! difference of large terms remains ($s = r(y_1)$, $\kappa = k(y_2)$, $y_1 = m/(2\beta w)$,
 //! $y_2 = m/(2\alpha w)$, $\mu = m/l_H$):
-//! $$C_2 = -\frac{m\rho_s w}{2KR}\,\frac{\alpha(1-s) + \beta s(1+\kappa)}{1+s\kappa},\qquad
-//!   Q = -\rho_s P\left[(1-\mu^2) - \frac{4\mu q\,s}{1 + s\kappa}\right],$$
+//! $$C_2 = -\frac{m\signed_friction w}{2KR}\,\frac{\alpha(1-s) + \beta s(1+\kappa)}{1+s\kappa},\qquad
+//!   Q = -\signed_friction P\left[(1-\mu^2) - \frac{4\mu q\,s}{1 + s\kappa}\right],$$
 //! $$M_1 = P\left[d(1-\lambda^2) + w(\lambda^2\alpha-\beta)\right],\quad
 //!   1-\lambda^2 = \frac{4\lambda q r}{1+rk},\quad
 //!   \lambda^2\alpha - \beta = \frac{\beta(\alpha-\beta)(rk + I_2/I_0)}{\beta(1+rk) +
@@ -355,8 +355,8 @@ enum Stress {
 pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
     let sc = Scales::of(p)?;
     let (alpha, beta, w) = (p.alpha, p.beta, p.speed);
-    let rho = p.friction();
-    let rho_s = if p.creep() < 0.0 { -rho } else { rho };
+    let friction = p.friction();
+    let signed_friction = if p.creep() < 0.0 { -friction } else { friction };
     let kr = sc.kr;
     let lh = sc.lh;
 
@@ -371,7 +371,7 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
             front: a,
             stick_length: m,
             stick_start: cs.stick_start,
-            c2: -rho_s * m * alpha * w / (2.0 * kr),
+            c2: -signed_friction * m * alpha * w / (2.0 * kr),
             tangential_force: cs.tangential_force,
             moment_m1: 0.0,
             rolling_moment: cs.rolling_moment,
@@ -419,7 +419,7 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
         let kk = k_ratio(z / (2.0 * alpha * w));
         s * kk / (1.0 + s * kk)
     };
-    let slip = 2.0 * p.creep().abs() * p.radius() / rho;
+    let slip = 2.0 * p.creep().abs() * p.radius() / friction;
     let t = (l + 2.0 * d) - slip;
     let (regime, m, stick_iterations, stick_residual) = if p.creep() == 0.0 {
         (Regime::FullStick, l, 0, 0.0)
@@ -440,13 +440,13 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
     let s = i_ratio(y1);
     let kk = k_ratio(y2);
     let den2 = 1.0 + s * kk;
-    let c2 = -(m * rho_s * w / (2.0 * kr))
+    let c2 = -(m * signed_friction * w / (2.0 * kr))
         * (alpha * one_minus_i_ratio(y1) + beta * s * (1.0 + kk))
         / den2;
     let mu = m / lh;
     let tangential_force = match regime {
         Regime::FullStick => 0.0,
-        _ => -rho_s * p.load() * ((1.0 - mu) * (1.0 + mu) - 4.0 * mu * q * s / den2),
+        _ => -signed_friction * p.load() * ((1.0 - mu) * (1.0 + mu) - 4.0 * mu * q * s / den2),
     };
     let tangential_force = finite("Q", tangential_force)?;
     let rolling_moment = finite("M*", m1 + tangential_force * p.radius())?;
@@ -464,15 +464,15 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
         c2_by_parts: -(half * half / kr) * (alpha - beta) / (beta * (1.0 + rk)),
     };
     let hm = 0.5 * m;
-    let mw = rho_s * hm * w / kr;
+    let mw = signed_friction * hm * w / kr;
     let tau = ExpKernel {
         kappa: y1,
         c0: mw * (alpha - beta) * s / den2,
         c1: mw * (alpha + beta * s * kk) / den2,
         fa: -mw * (alpha * one_minus_i_ratio(y1) + beta * s * (1.0 + kk)) / den2,
         fb: mw * ((alpha - beta) * (1.0 + s) / den2 + beta),
-        c2: rho_s * hm * hm / kr,
-        c2_by_parts: -(rho_s * hm * hm / kr) * (alpha - beta) / (beta * den2),
+        c2: signed_friction * hm * hm / kr,
+        c2_by_parts: -(signed_friction * hm * hm / kr) * (alpha - beta) / (beta * den2),
     };
     let rear = half - d;
     let front = half + d;
@@ -498,7 +498,7 @@ pub fn solve(p: &GoryachevaParams) -> Result<GoryachevaSolution, Error> {
             stick_residual,
             bessel_args: [cl.x1, cl.x2, y1, y2],
         },
-        stress: Stress::Viscoelastic { beta_w: beta * w, signed_friction: rho_s, sigma, tau },
+        stress: Stress::Viscoelastic { beta_w: beta * w, signed_friction, sigma, tau },
     })
 }
 
@@ -537,9 +537,9 @@ impl GoryachevaSolution {
     }
 
     /// True shear $\tau_{xy}(x)$ \[Pa\] at $x$ (eq 13), zero outside $(-a, b)$:
-    /// $\tau = -\rho_s\sigma_y$ on the slip zone and, on the stick zone $(c, b)$,
-    /// $$\tau = -\rho_s\sigma_y + \frac{1}{\pi\beta w}\int_x^b
-    ///   \left[\Big(\frac{\rho_s}{2KR}(b-c-2t+2\alpha w) + \frac{\delta}{K}\Big)(t-c) + C_2\right]
+    /// $\tau = -\signed_friction\sigma_y$ on the slip zone and, on the stick zone $(c, b)$,
+    /// $$\tau = -\signed_friction\sigma_y + \frac{1}{\pi\beta w}\int_x^b
+    ///   \left[\Big(\frac{\signed_friction}{2KR}(b-c-2t+2\alpha w) + \frac{\delta}{K}\Big)(t-c) + C_2\right]
     ///   \frac{e^{-(t-x)/(\beta w)}\,dt}{\sqrt{(t-c)(b-t)}},$$
     /// the form of eq 13 with weight $\le 1$ (equal to eq 13 by eq 23, as for
     /// [`pressure`](Self::pressure)). Elastic case: Carter's closed form.

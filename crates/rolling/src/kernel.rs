@@ -27,7 +27,9 @@
 
 use crate::StressConfig;
 use std::f64::consts::PI;
-use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Estimate, QuadError, Tolerance};
+use stickslip_quad::{
+    gauss_kronrod, AdaptiveConfig, Error as QuadratureError, Estimate, Tolerance,
+};
 
 /// Exponent at which the integration range is cut.
 const CUT: f64 = 60.0;
@@ -57,7 +59,7 @@ impl ExpKernel {
         &self,
         theta_x: f64,
         cfg: &StressConfig,
-    ) -> Result<Estimate, QuadError> {
+    ) -> Result<Estimate, QuadratureError> {
         if theta_x <= 0.0 {
             return Ok(Estimate { value: 0.0, error: 0.0, evals: 0 });
         }
@@ -101,8 +103,8 @@ impl ExpKernel {
             let expo = -2.0 * kappa * (theta_x - 0.5 * u).sin() * (0.5 * u).sin();
             (p0 + pa * sh * sh + pb * ch * ch + p2 * s * s) * expo.exp()
         };
-        let abs = cfg.tol.abs.max(cfg.tol.rel * scale);
-        let tol = Tolerance::new(abs, cfg.tol.rel)?;
+        let abs = cfg.tol.abs().max(cfg.tol.rel() * scale);
+        let tol = Tolerance::new(abs, cfg.tol.rel())?;
         let acfg = AdaptiveConfig::new(tol).with_max_subdivisions(cfg.max_subdivisions)?;
         let est = gauss_kronrod(f, 0.0, theta_x - theta_cut, &acfg)?;
         let truncation = if theta_cut > 0.0 { (-CUT).exp() * bound * theta_cut } else { 0.0 };

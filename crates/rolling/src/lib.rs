@@ -52,15 +52,25 @@ pub enum Regime {
 /// impossible relative accuracy).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StressConfig {
-    /// Requested accuracy (`tol.rel` is relative to the stress scale $S$).
+    /// Requested accuracy (`tol.rel()` is relative to the stress scale $S$).
     pub tol: Tolerance,
     /// Subdivision limit of the adaptive Gauss–Kronrod integrator.
     pub max_subdivisions: usize,
 }
 
+impl StressConfig {
+    /// Relative tolerances the stress quadratures are meant for: below $10^{-14}$ the
+    /// Gauss–Kronrod error estimate sits at the rounding level of the stress scale and
+    /// cannot be promised; above $10^{-3}$ the pressure and shear are too rough to show.
+    pub const TOLERANCE_RANGE: (f64, f64) = (1e-14, 1e-3);
+}
+
 impl Default for StressConfig {
     /// $10^{-12}$ relative, at most 200 subintervals.
     fn default() -> Self {
-        StressConfig { tol: Tolerance { abs: 0.0, rel: 1e-12 }, max_subdivisions: 200 }
+        StressConfig {
+            tol: Tolerance::relative(1e-12).expect("1e-12 is a valid relative tolerance"),
+            max_subdivisions: 200,
+        }
     }
 }

@@ -6,12 +6,15 @@
 //! * [`influence`]: tangential influence matrices from the exact uniform-rectangle formula
 //!   (FORMULAS.md F) or the seed's point-load approximation;
 //! * [`lp`]: the modified linear program of seed 002, Fig. 3.5;
-//! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid.
+//! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid;
+//! * [`fast`]: the fast solver (both traction components free, FFT products);
+//! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]).
 //!
 //! Units: any consistent set (SI, or inch–lbf–psi as in seed 002's examples).
 #![cfg_attr(docsrs, feature(doc_auto_cfg))]
 
 pub mod closed;
+pub mod contract;
 pub mod error;
 pub mod fast;
 pub mod grid;
@@ -19,12 +22,16 @@ pub mod influence;
 pub mod lp;
 pub mod solve;
 
+pub use contract::{
+    FastSolver, GridProblem, GridSolution, GridSolver, Load, LoadKind, ModifiedLp, SolverInfo,
+};
 pub use error::{Error, Result};
-pub use fast::{FastConfig, FastLoad, FastProblem, FastSolution, TractionDirections};
+pub use fast::{FastConfig, FastProblem, FastSolution, TractionDirections};
 pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
 pub use influence::InfluenceModel;
 pub use lp::{LpConfig, LpSolution};
 pub use solve::{
-    DirectionAssumption, ElementState, Load, PatchSummary, Regime, SolveInfo, TractionProblem,
+    DirectionAssumption, ElementState, PatchSummary, Regime, SolveInfo, TractionProblem,
     TractionSolution,
 };
+pub use stickslip_quad::Tolerance;

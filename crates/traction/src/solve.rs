@@ -2,11 +2,12 @@
 //! twisting moment, solved by the modified LP of seed 002 (§3.3, Fig. 3.5; twist §3.4), with
 //! the influence coefficients of FORMULAS.md F.
 
-use crate::error::{non_negative, positive, Error, Result};
+use crate::contract::{check_pair, Load};
+use crate::error::{Error, Result};
 use crate::grid::ContactGrid;
 use crate::influence::{projected_matrix, tensor_matrix, Compliance, InfluenceModel};
 use crate::lp::{modified_lp, LpConfig};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 use stickslip_halfspace::Material;
 
 /// Directions, mode, load magnitude and the assumption record, as prepared for the LP.
@@ -14,28 +15,6 @@ type Setup = (Vec<(f64, f64)>, Vec<f64>, f64, DirectionAssumption);
 
 /// Unit directions, relative residual and iterations of the full-stick preprocessor.
 type Preprocessed = (Vec<(f64, f64)>, f64, usize);
-
-/// The applied tangential load.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Load {
-    /// A tangential force of `magnitude` $\ge 0$ along the direction at `angle` (radians from
-    /// $+x$). The traction is assumed parallel to the load (seed 002 §3.3.1).
-    Force {
-        /// Magnitude $T \ge 0$.
-        magnitude: f64,
-        /// Direction angle in radians.
-        angle: f64,
-    },
-    /// A twisting moment $M$ (counter-clockwise positive) about `centre`
-    /// (`None`: the centre of the normal force). Traction directions come from the seed's
-    /// preprocessor (§3.4.1): the full-stick solution for a rigid rotation about the centre.
-    Moment {
-        /// Moment $M$.
-        moment: f64,
-        /// Centre of rotation.
-        centre: Option<(f64, f64)>,
-    },
-}
 
 /// Contact regime of a solution.
 #[non_exhaustive]
@@ -107,10 +86,10 @@ pub struct SolveInfo {
     pub longest_degenerate_run: usize,
     /// Entering candidates refused by the modified entry rule.
     pub rejected_entries: usize,
-    /// Time to assemble the influence matrices.
-    pub assembly_time: Duration,
-    /// Time in the LP.
-    pub lp_time: Duration,
+    /// Wall time to assemble the influence matrices, seconds.
+    pub assembly_seconds: f64,
+    /// Wall time in the LP, seconds.
+    pub lp_seconds: f64,
 }
 
 /// The solution on a grid.
@@ -148,6 +127,9 @@ pub struct TractionSolution {
     /// Point of application of the resultant: the force-weighted centre
     /// $\sum F_k\mathbf{x}_k/\sum F_k$ (the centre of parallel forces for a force load).
     pub centre_of_traction: (f64, f64),
+    /// The friction capacity of the load's mode, $\sum_k fP_k\max(g_k, 0)$: the largest
+    /// $|T|$ (or $|M|$ under the fixed twist directions) the contact carries.
+    pub capacity: f64,
     /// Load in excess of the friction capacity (0 unless gross slip beyond onset).
     pub excess_load: f64,
     /// Per-patch summaries.
@@ -168,57 +150,23 @@ pub struct TractionProblem<'a> {
 }
 
 impl<'a> TractionProblem<'a> {
-    /// Validate: $f > 0$, finite load (force magnitude $\ge 0$), at least one deformable
-    /// body, a moment centre that is finite.
+    /// Validate: $f > 0$, a non-empty grid, finite load (force magnitude $\ge 0$), at least
+    /// one deformable body, a moment centre that is finite.
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] naming the offending input.
+    /// [`Error::OutOfDomain`] naming the offending input, [`Error::EmptyGrid`],
+    /// [`Error::UnsupportedLoad`] for [`Load::ForceAndMoment`] (the LP takes a force or a
+    /// moment).
     pub fn new(
         grid: &'a ContactGrid,
         bodies: [Material; 2],
         friction: f64,
         load: Load,
     ) -> Result<Self> {
-        positive("friction coefficient", friction)?;
-        if grid.is_empty() {
-            return Err(Error::EmptyGrid { reason: "the grid has no element" });
-        }
-        if bodies[0].is_rigid() && bodies[1].is_rigid() {
-            return Err(Error::OutOfDomain {
-                name: "bodies",
-                value: f64::INFINITY,
-                allowed: "at least one deformable body",
-            });
-        }
-        match load {
-            Load::Force { magnitude, angle } => {
-                non_negative("force magnitude", magnitude)?;
-                if !angle.is_finite() {
-                    return Err(Error::OutOfDomain {
-                        name: "force angle",
-                        value: angle,
-                        allowed: "finite",
-                    });
-                }
-            }
-            Load::Moment { moment, centre } => {
-                if !moment.is_finite() {
-                    return Err(Error::OutOfDomain {
-                        name: "moment",
-                        value: moment,
-                        allowed: "finite",
-                    });
-                }
-                if let Some((x, y)) = centre {
-                    if !(x.is_finite() && y.is_finite()) {
-                        return Err(Error::OutOfDomain {
-                            name: "rotation centre",
-                            value: if x.is_finite() { y } else { x },
-                            allowed: "finite",
-                        });
-                    }
-                }
-            }
+        check_pair(grid, &bodies, friction)?;
+        load.validate()?;
+        if let Load::ForceAndMoment { .. } = load {
+            return Err(Error::UnsupportedLoad { solver: "modified LP", load: load.kind() });
         }
         Ok(Self {
             grid,
@@ -284,6 +232,7 @@ impl<'a> TractionProblem<'a> {
                     DirectionAssumption::FromFullStick { centre, residual, iterations },
                 ))
             }
+            _ => Err(Error::UnsupportedLoad { solver: "modified LP", load: self.load.kind() }),
         }
     }
 
@@ -296,7 +245,7 @@ impl<'a> TractionProblem<'a> {
     /// traction.
     ///
     /// # Errors
-    /// [`Error::Infeasible`] / [`Error::IterationLimit`] from the LP;
+    /// [`Error::Infeasible`] / [`Error::NotConverged`] (pivot budget) from the LP;
     /// [`Error::NotPositiveDefinite`] if the twist preprocessor fails.
     pub fn solve(&self) -> Result<TractionSolution> {
         let grid = self.grid;
@@ -341,13 +290,13 @@ impl<'a> TractionProblem<'a> {
                 degenerate_pivots: s.degenerate_pivots,
                 longest_degenerate_run: s.longest_degenerate_run,
                 rejected_entries: s.rejected_entries,
-                assembly_time,
-                lp_time: Duration::ZERO,
+                assembly_seconds: 0.0,
+                lp_seconds: 0.0,
             };
             (s.force, s.rigid, s.slip, info, false)
         };
-        info.assembly_time = assembly_time;
-        info.lp_time = t1.elapsed();
+        info.assembly_seconds = assembly_time.as_secs_f64();
+        info.lp_seconds = t1.elapsed().as_secs_f64();
 
         let u = matvec(&a, &force);
         let gmax = mode.iter().map(|g| g.abs()).fold(0.0, f64::max);
@@ -450,6 +399,7 @@ impl<'a> TractionProblem<'a> {
             resultant: (rx, ry),
             moment_about_origin: mz,
             centre_of_traction,
+            capacity,
             excess_load: (load - capacity).max(0.0),
             patches,
             info,
@@ -465,8 +415,8 @@ impl SolveInfo {
             degenerate_pivots: 0,
             longest_degenerate_run: 0,
             rejected_entries: 0,
-            assembly_time: Duration::ZERO,
-            lp_time: Duration::ZERO,
+            assembly_seconds: 0.0,
+            lp_seconds: 0.0,
         }
     }
 }

@@ -38,8 +38,8 @@ fn example1(n_across: usize, model: InfluenceModel) -> (usize, f64, f64, f64, f6
         sol.info.iterations,
         sol.info.degenerate_pivots,
         sol.info.rejected_entries,
-        sol.info.assembly_time.as_secs_f64(),
-        sol.info.lp_time.as_secs_f64()
+        sol.info.assembly_seconds,
+        sol.info.lp_seconds
     );
     (grid.len(), sol.rigid_per_body[0], want, r_stick, m.stick_radius(), secs)
 }

@@ -10,8 +10,8 @@ use std::f64::consts::PI;
 use stickslip_traction::closed::{Lubkin, Mindlin};
 use stickslip_traction::fast::TensorConvolution;
 use stickslip_traction::{
-    ContactGrid, ElementState, Error, FastLoad, FastProblem, FastSolution, Patch, PatchPressure,
-    Regime, Shape, TractionDirections,
+    ContactGrid, ElementState, Error, FastProblem, FastSolution, Load, LoadKind, Patch,
+    PatchPressure, Regime, Shape, Tolerance, TractionDirections,
 };
 
 /// Worst violation of the optimality conditions, each relative to its natural scale
@@ -83,7 +83,7 @@ fn summary(name: &str, sol: &FastSolution) {
         sol.info.iterations,
         sol.info.cg_iterations,
         sol.info.residual,
-        sol.info.seconds + sol.info.setup_seconds
+        sol.info.solve_seconds + sol.info.setup_seconds
     );
 }
 
@@ -101,7 +101,7 @@ fn near_gross_slip_and_tiny_load() {
     for t in [0.999, 1e-6] {
         let m = Mindlin::new(a, p, f, t * f * p).unwrap();
         for dirs in [TractionDirections::ParallelToForce, TractionDirections::Free] {
-            let load = FastLoad::polar(t * f * p, 0.0).unwrap();
+            let load = Load::polar(t * f * p, 0.0).unwrap();
             let sol = FastProblem::new(&grid, [s, s], f, load)
                 .unwrap()
                 .with_directions(dirs.clone())
@@ -168,7 +168,7 @@ fn ring_contact() {
     let f = 0.3;
     let fp = f * grid.total_normal_force();
     for (t, ang) in [(0.5 * fp, 0.3), (0.95 * fp, 0.0)] {
-        let load = FastLoad::polar(t, ang).unwrap();
+        let load = Load::polar(t, ang).unwrap();
         let sol = FastProblem::new(&grid, [s, s], f, load).unwrap().solve().unwrap();
         summary(&format!("ring, T/fP = {:.2}", t / fp), &sol);
         assert!(sol.info.residual <= tol::RESIDUAL);
@@ -192,7 +192,7 @@ fn two_patches_ten_to_one() {
     let fp = f * grid.total_normal_force();
     for (frac, ang) in [(0.3, 0.0), (0.8, 1.2)] {
         let t = frac * fp;
-        let load = FastLoad::polar(t, ang).unwrap();
+        let load = Load::polar(t, ang).unwrap();
         let sol = FastProblem::new(&grid, [s, s], f, load).unwrap().solve().unwrap();
         summary(&format!("two patches 10:1, T/fP = {frac}"), &sol);
         let (mut f0, mut f1) = ((0.0, 0.0), (0.0, 0.0));
@@ -229,7 +229,7 @@ fn twist_lubkin_c_over_a_0_1() {
     let h = grid.hx;
     let lub = Lubkin::from_stick_radius(a, p, f, 0.1 * a).unwrap();
     let m = lub.moment().unwrap();
-    let load = FastLoad::moment(m, None).unwrap();
+    let load = Load::moment(m, None).unwrap();
     let sol = FastProblem::new(&grid, [s, s], f, load).unwrap().solve().unwrap();
     summary("twist c/a = 0.1", &sol);
     let r_eq = (sol.stick_count() as f64 * h * h / PI).sqrt();
@@ -258,7 +258,7 @@ fn gross_slip_zero_load_and_errors() {
     let (grid, p, f, _) = hertz(10);
     let s = steel();
     // Exactly at the capacity: gross slip, every element at f p along the force.
-    let sol = FastProblem::new(&grid, [s, s], f, FastLoad::polar(f * p, 0.5).unwrap())
+    let sol = FastProblem::new(&grid, [s, s], f, Load::polar(f * p, 0.5).unwrap())
         .unwrap()
         .solve()
         .unwrap();
@@ -266,35 +266,47 @@ fn gross_slip_zero_load_and_errors() {
     assert_eq!(sol.regime, Regime::GrossSlip);
     assert!((sol.resultant.0.hypot(sol.resultant.1) / (f * p) - 1.0).abs() < 1e-13);
     // Zero load: zero traction, full stick.
-    let sol = FastProblem::new(&grid, [s, s], f, FastLoad::force(0.0, 0.0).unwrap())
+    let sol = FastProblem::new(&grid, [s, s], f, Load::force(0.0, 0.0).unwrap())
         .unwrap()
         .solve()
         .unwrap();
     assert_eq!(sol.regime, Regime::FullStick);
     assert!(sol.traction.iter().all(|q| q.0 == 0.0 && q.1 == 0.0));
-    // Beyond the capacity: a precise error naming the load ratio.
-    let e = FastProblem::new(&grid, [s, s], f, FastLoad::polar(1.01 * f * p, 0.0).unwrap())
+    // Beyond the capacity: a typed error carrying the load and the capacity.
+    let e = FastProblem::new(&grid, [s, s], f, Load::polar(1.01 * f * p, 0.0).unwrap())
         .unwrap()
         .solve()
         .unwrap_err();
     println!("T = 1.01 fP: {e}");
-    assert!(matches!(e, Error::OutOfDomain { value, .. } if (value - 1.01).abs() < 1e-9));
+    assert!(matches!(
+        e,
+        Error::CapacityExceeded { load: LoadKind::Force, requested, capacity }
+            if (requested / capacity - 1.01).abs() < 1e-9
+    ));
     // A moment beyond the spin capacity.
-    let e = FastProblem::new(&grid, [s, s], f, FastLoad::moment(1e6, None).unwrap())
+    let e = FastProblem::new(&grid, [s, s], f, Load::moment(1e6, None).unwrap())
         .unwrap()
         .solve()
         .unwrap_err();
     println!("M beyond the spin capacity: {e}");
-    assert!(matches!(e, Error::OutOfDomain { .. }));
+    assert!(matches!(
+        e,
+        Error::CapacityExceeded { load: LoadKind::Moment, requested, capacity }
+            if requested == 1e6 && capacity < requested
+    ));
     // Bad inputs.
-    assert!(FastLoad::force(f64::NAN, 0.0).is_err());
-    assert!(FastLoad::polar(-1.0, 0.0).is_err());
-    assert!(FastProblem::new(&grid, [s, s], 0.0, FastLoad::force(1.0, 0.0).unwrap()).is_err());
-    assert!(stickslip_traction::FastConfig::new(0.0, 10).is_err());
-    assert!(stickslip_traction::FastConfig::new(1e-8, 0).is_err());
+    assert!(Load::force(f64::NAN, 0.0).is_err());
+    assert!(Load::polar(-1.0, 0.0).is_err());
+    assert!(FastProblem::new(&grid, [s, s], 0.0, Load::force(1.0, 0.0).unwrap()).is_err());
+    let rel = |r: f64| Tolerance::relative(r).unwrap();
+    assert!(matches!(
+        stickslip_traction::FastConfig::new(rel(1e-15), 10),
+        Err(Error::ToleranceOutOfRange { range: (1e-14, 1e-1), .. })
+    ));
+    assert!(stickslip_traction::FastConfig::new(rel(1e-8), 0).is_err());
     // An iteration budget that is too small: the error carries the residual reached.
-    let cfg = stickslip_traction::FastConfig::new(1e-12, 1).unwrap();
-    let e = FastProblem::new(&grid, [s, s], f, FastLoad::polar(0.5 * f * p, 0.0).unwrap())
+    let cfg = stickslip_traction::FastConfig::new(rel(1e-12), 1).unwrap();
+    let e = FastProblem::new(&grid, [s, s], f, Load::polar(0.5 * f * p, 0.0).unwrap())
         .unwrap()
         .with_config(cfg)
         .solve()

@@ -4,7 +4,7 @@ mod fast_common;
 use fast_common::{extended, steel, tol};
 use std::time::Instant;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{ContactGrid, ElementState, FastLoad, FastProblem, FastSolution};
+use stickslip_traction::{ContactGrid, ElementState, FastProblem, FastSolution, Load};
 
 /// Hertz radius of a sphere R on a flat, a = (3PR/(4E*))^(1/3) (FORMULAS.md E).
 fn hertz_radius(p: f64, r: f64) -> f64 {
@@ -49,7 +49,7 @@ fn mindlin_case(side: usize, cells: usize, t: f64, angle: f64) -> (FastSolution,
     let grid = hertz_box(side, cells, a, p);
     let h = grid.hx;
     let s = steel();
-    let load = FastLoad::polar(t * f * p, angle).unwrap();
+    let load = Load::polar(t * f * p, angle).unwrap();
     let t0 = Instant::now();
     let sol = FastProblem::new(&grid, [s, s], f, load).unwrap().solve().unwrap();
     let seconds = t0.elapsed().as_secs_f64();
@@ -86,7 +86,7 @@ fn mindlin_case(side: usize, cells: usize, t: f64, angle: f64) -> (FastSolution,
         delta,
         100.0 * shift_rel,
         sol.info.setup_seconds,
-        sol.info.seconds,
+        sol.info.solve_seconds,
     );
     let rep =
         Report { n: grid.len(), residual: sol.info.residual, stick_err_cells, shift_rel, seconds };

@@ -7,7 +7,7 @@ use fast_common::{extended, steel, tol};
 use std::time::Instant;
 use stickslip_traction::closed::Lubkin;
 use stickslip_traction::{
-    ContactGrid, ElementState, FastLoad, FastProblem, Load, TractionDirections, TractionProblem,
+    ContactGrid, ElementState, FastProblem, Load, TractionDirections, TractionProblem,
 };
 
 /// Sphere (Example 1 proportions) on a grid `n_across` elements across the diameter.
@@ -23,7 +23,7 @@ fn compare_force(n_across: usize, t: f64, angle: f64) {
         .solve()
         .unwrap();
     let t_lp = t0.elapsed().as_secs_f64();
-    let load = FastLoad::polar(t * f * p, angle).unwrap();
+    let load = Load::polar(t * f * p, angle).unwrap();
     let t1 = Instant::now();
     let fast = FastProblem::new(&grid, [s, s], f, load)
         .unwrap()
@@ -90,7 +90,7 @@ fn one_direction_assumption_effect() {
     };
     for &(n_across, t) in cases {
         let grid = ContactGrid::hertz_circle(a, p, n_across).unwrap();
-        let load = FastLoad::polar(t * f * p, 0.0).unwrap();
+        let load = Load::polar(t * f * p, 0.0).unwrap();
         let base = FastProblem::new(&grid, [s, s], f, load).unwrap();
         let par = base
             .clone()
@@ -156,7 +156,7 @@ fn twist_fixed_directions_match_lp() {
         .solve()
         .unwrap();
     let t_lp = t0.elapsed().as_secs_f64();
-    let fast = FastProblem::new(&grid, [s, s], f, FastLoad::moment(m, None).unwrap())
+    let fast = FastProblem::new(&grid, [s, s], f, Load::moment(m, None).unwrap())
         .unwrap()
         .with_directions(TractionDirections::Fixed(lp.direction.clone()))
         .unwrap()
@@ -175,7 +175,7 @@ fn twist_fixed_directions_match_lp() {
         "twist vs LP (fixed directions), N = {}: max |F_fast - F_lp| / max F = {worst:.2e}, \
          rotation rel. diff {rot_err:.2e}; LP {t_lp:.3} s, fast {:.4} s ({} Newton, {} CG)",
         grid.len(),
-        fast.info.seconds + fast.info.setup_seconds,
+        fast.info.solve_seconds + fast.info.setup_seconds,
         fast.info.iterations,
         fast.info.cg_iterations
     );

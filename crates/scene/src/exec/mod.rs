@@ -84,6 +84,19 @@ pub(crate) fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect()
 }
 
+/// A stage's error with the file, and the line and column of its key when the scene came
+/// from a file.
+fn locate(plan: &Plan, e: SceneError) -> SceneError {
+    let e = match (&plan.source, &e.key, e.position) {
+        (Some(src), Some(key), None) => {
+            let span = src.span(key);
+            e.at(src.text(), span)
+        }
+        _ => e,
+    };
+    e.in_file(plan.file.clone())
+}
+
 /// Run `plan`, stage by stage, as planned.
 ///
 /// # Errors
@@ -112,7 +125,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         Recipe::Rolling(r) => rolling::run(r, &mut cx),
         Recipe::Contact(r) => contact(r, &mut cx),
     }
-    .map_err(|e| e.in_file(plan.file.clone()))?;
+    .map_err(|e| locate(plan, e))?;
     let mut effects =
         EffectsOut { on: Vec::new(), off: Default::default(), methods: Default::default() };
     let mut methods = Vec::new();
@@ -218,9 +231,8 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
             friction::cattaneo(&mut lat, r, &n, force, along_x, cx)?
         }
         Some(Tangential::Lubkin { moment }) => twist::lubkin(&mut lat, r, &n, moment, cx)?,
-        Some(Tangential::Lp(mode)) => grid::lp(&mut lat, r, &n, mode, cx)?,
-        Some(Tangential::Fast { force, direction, moment, tolerance }) => {
-            grid::fast(&mut lat, r, &n, force, direction, moment, tolerance, cx)?
+        Some(Tangential::Grid(g)) => {
+            grid::solve(&mut lat, r, &n, g.method, g.force, g.direction, g.moment, g.tolerance, cx)?
         }
     };
     let cycle = match r.cycle {

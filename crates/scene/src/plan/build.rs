@@ -9,13 +9,14 @@ use stickslip_halfspace::hertz::HertzSphere;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
 use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
+use stickslip_traction::{FastConfig, ModifiedLp};
 
-use super::checks::{self, invalid, tolerance_for, GRADED_TOLERANCE_RANGE};
+use super::checks::{self, invalid, tolerance_for};
 use super::cost::{self, lattice_elements};
 use super::recipe::{
-    ContactNormal, ContactRecipe, CycleRecipe, Force, LineDisplacements, LineField,
-    LineFieldMethod, LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface, LpMode, Recipe,
-    RollingModel, RollingRecipe, Tangential,
+    ContactNormal, ContactRecipe, CycleRecipe, Force, GridMethod, GridStep, LineDisplacements,
+    LineField, LineFieldMethod, LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface,
+    Recipe, RollingModel, RollingRecipe, Tangential,
 };
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
 use crate::error::ErrorKind;
@@ -65,10 +66,7 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     };
     let effects = effects(scene, &recipe, &mut notes);
     let grid_solver = match &recipe {
-        Recipe::Contact(ContactRecipe {
-            tangential: Some(Tangential::Lp(_) | Tangential::Fast { .. }),
-            ..
-        }) => grid_reason,
+        Recipe::Contact(ContactRecipe { tangential: Some(Tangential::Grid(_)), .. }) => grid_reason,
         _ => None,
     };
     let (surface_points, grid_elements, cost) = cost::estimate(scene, &effects)?;
@@ -76,6 +74,7 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     Ok(Plan {
         title: scene.title.clone(),
         file: scene.file.clone(),
+        source: scene.source.clone(),
         effects,
         surface_points,
         grid_elements,
@@ -235,7 +234,8 @@ fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
 }
 
 fn graded_accuracy(scene: &Scene) -> Result<Accuracy, Issue> {
-    let t = tolerance_for(scene, "the graded-kernel quadrature", GRADED_TOLERANCE_RANGE)?;
+    let t = tolerance_for(scene, "the graded-kernel quadrature", Accuracy::TOLERANCE_RANGE)?;
+    let t = stickslip_graded::Tolerance::relative(t).map_err(|e| invalid("solver.tolerance", e))?;
     Accuracy::new(t).map_err(|e| invalid("solver.tolerance", e))
 }
 
@@ -258,7 +258,11 @@ fn rolling_recipe(
     let friction = scene.load.friction;
     let model = match scene.substrate {
         Substrate::Viscoelastic { elastic: el, alpha, beta } => {
-            let tol = tolerance_for(scene, "the rolling stress quadrature", (1e-14, 1e-3))?;
+            let tol = tolerance_for(
+                scene,
+                "the rolling stress quadrature",
+                StressConfig::TOLERANCE_RANGE,
+            )?;
             let params = GoryachevaParams::new(
                 el.e, el.nu, radius, load, friction, creep, alpha, beta, speed,
             )
@@ -266,7 +270,8 @@ fn rolling_recipe(
             RollingModel::Goryacheva {
                 params,
                 stress: StressConfig {
-                    tol: stickslip_rolling::Tolerance { abs: 0.0, rel: tol },
+                    tol: stickslip_rolling::Tolerance::relative(tol)
+                        .map_err(|e| invalid("solver.tolerance", e))?,
                     max_subdivisions: 200,
                 },
                 viscoelastic: alpha != beta,
@@ -360,14 +365,18 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
         Force { signed: l.tangential, magnitude, direction }
     };
     let f = l.friction;
-    let direction_all = force.direction;
-    let fast_step = |force: Option<Force>, moment: Option<f64>| -> Result<Tangential, Issue> {
-        Ok(Tangential::Fast {
-            force,
-            direction: direction_all,
-            moment,
-            tolerance: tolerance_for(scene, "the fast solver", (1e-14, 1e-1))?,
-        })
+    let direction = force.direction;
+    let grid_step = |method,
+                     force: Option<Force>,
+                     moment: Option<f64>|
+     -> Result<Tangential, Issue> {
+        let tolerance = match method {
+            GridMethod::Fast => {
+                tolerance_for(scene, "the fast solver", FastConfig::TOLERANCE_RANGE)?
+            }
+            GridMethod::Lp => tolerance_for(scene, "the modified LP", ModifiedLp::TOLERANCE_RANGE)?,
+        };
+        Ok(Tangential::Grid(GridStep { method, force, direction, moment, tolerance }))
     };
     let tangential = if f > 0.0 && (l.tangential != 0.0 || l.sliding || l.moment != 0.0) {
         Some(if l.sliding {
@@ -376,8 +385,8 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             // a moment alone
             match body {
                 ContactBody::Sphere(_) if closed_ok => Tangential::Lubkin { moment: l.moment },
-                _ if fast => fast_step(None, Some(l.moment))?,
-                _ => Tangential::Lp(LpMode::Moment(l.moment)),
+                _ if fast => grid_step(GridMethod::Fast, None, Some(l.moment))?,
+                _ => grid_step(GridMethod::Lp, None, Some(l.moment))?,
             }
         } else {
             match body {
@@ -387,15 +396,16 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
                     let d = l.direction_deg.rem_euclid(180.0);
                     Tangential::Cattaneo { force, along_x: d.min(180.0 - d) < 45.0 }
                 }
-                _ if fast => fast_step(Some(force), (l.moment != 0.0).then_some(l.moment))?,
-                _ => Tangential::Lp(LpMode::Force(force)),
+                _ if fast => {
+                    grid_step(GridMethod::Fast, Some(force), (l.moment != 0.0).then_some(l.moment))?
+                }
+                _ => grid_step(GridMethod::Lp, Some(force), None)?,
             }
         })
     } else {
         None
     };
-    let lattice_output = scene.outputs.surface
-        || matches!(tangential, Some(Tangential::Lp(_) | Tangential::Fast { .. }));
+    let lattice_output = scene.outputs.surface || matches!(tangential, Some(Tangential::Grid(_)));
     let cycle =
         scene.outputs.cycle.map(|c| CycleRecipe { amplitude: c.amplitude, points: c.points });
     Ok((
@@ -469,9 +479,11 @@ impl Tangential {
             Tangential::Mindlin { .. } => Technique::Mindlin,
             Tangential::Cattaneo { .. } => Technique::Cattaneo,
             Tangential::Lubkin { .. } => Technique::Lubkin,
-            Tangential::Lp(LpMode::Force(_)) => Technique::LpForce,
-            Tangential::Lp(LpMode::Moment(_)) => Technique::LpMoment,
-            Tangential::Fast { .. } => Technique::Fast,
+            Tangential::Grid(GridStep { method: GridMethod::Fast, .. }) => Technique::Fast,
+            Tangential::Grid(GridStep { method: GridMethod::Lp, force: None, .. }) => {
+                Technique::LpMoment
+            }
+            Tangential::Grid(GridStep { method: GridMethod::Lp, .. }) => Technique::LpForce,
         }
     }
 }

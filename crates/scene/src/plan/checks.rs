@@ -12,10 +12,6 @@ use super::Issue;
 use crate::error::ErrorKind;
 use crate::scene::{Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate};
 
-/// The relative tolerances the graded-kernel quadrature accepts
-/// (`stickslip_graded::Accuracy::new`).
-pub(crate) const GRADED_TOLERANCE_RANGE: (f64, f64) = (1e-15, 1e-2);
-
 pub(crate) fn issue(
     kind: ErrorKind,
     key: &'static str,

@@ -312,6 +312,8 @@ pub struct Plan {
     pub title: String,
     /// The scene file, when the scene came from one (for messages).
     pub file: Option<std::path::PathBuf>,
+    /// The scene's source text and spans, to locate refusals found while executing.
+    pub source: Option<std::sync::Arc<crate::scene::Source>>,
     /// What execution does: the method and resolved inputs of every stage.
     pub recipe: Recipe,
 }

@@ -276,29 +276,33 @@ pub enum Tangential {
         /// Moment (N m, signed).
         moment: f64,
     },
-    /// The modified LP of seed 002 (one load mode).
-    Lp(LpMode),
-    /// The fast FFT solver: a force, a moment, or both.
-    Fast {
-        /// The force, if any.
-        force: Option<Force>,
-        /// The direction of the force (rad from +x); with a moment alone, the scene's
-        /// `load.direction_deg` (it orients the reported shift across the load).
-        direction: f64,
-        /// The moment (N m, signed), if any.
-        moment: Option<f64>,
-        /// Relative tolerance of the Newton iteration.
-        tolerance: f64,
-    },
+    /// A grid solver through the traction crate's contract.
+    Grid(GridStep),
 }
 
-/// The one load mode the modified LP takes.
+/// Which grid solver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GridMethod {
+    /// The modified LP of seed 002: a force or a moment, not both.
+    Lp,
+    /// The fast FFT solver: a force, a moment, or both.
+    Fast,
+}
+
+/// A grid solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum LpMode {
-    /// A tangential force.
-    Force(Force),
-    /// A twisting moment (N m, signed).
-    Moment(f64),
+pub struct GridStep {
+    /// The solver.
+    pub method: GridMethod,
+    /// The force, if any.
+    pub force: Option<Force>,
+    /// The direction of the force (rad from +x); with a moment alone, the scene's
+    /// `load.direction_deg` (it orients the reported shift across the load).
+    pub direction: f64,
+    /// The moment (N m, signed), if any.
+    pub moment: Option<f64>,
+    /// Relative tolerance, inside the solver's supported range.
+    pub tolerance: f64,
 }
 
 /// A tangential force as the scene gives it and as the solvers take it.

@@ -396,9 +396,14 @@ pub struct Source {
 }
 
 impl Source {
+    /// The text the scene was read from.
+    pub(crate) fn text(&self) -> &str {
+        &self.text
+    }
+
     /// The span of `key`: the value itself, or (for a key not in the file, or an element of
     /// a list) the nearest enclosing value or table that is.
-    fn span(&self, key: &str) -> Option<Range<usize>> {
+    pub(crate) fn span(&self, key: &str) -> Option<Range<usize>> {
         let mut k = key;
         loop {
             if let Some(s) = self.spans.get(k) {

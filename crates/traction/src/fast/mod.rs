@@ -58,4 +58,5 @@ mod operator;
 mod solver;
 
 pub use operator::{ConvScratch, TensorConvolution};
-pub use solver::{FastConfig, FastInfo, FastLoad, FastProblem, FastSolution, TractionDirections};
+pub(crate) use solver::{resultant_moment, SOLVER_NAME};
+pub use solver::{FastConfig, FastInfo, FastProblem, FastSolution, TractionDirections};

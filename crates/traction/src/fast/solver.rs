@@ -2,79 +2,17 @@
 //! iteration of the fast solver (see the module documentation of [`crate::fast`]).
 
 use super::operator::{ConvScratch, TensorConvolution};
-use crate::error::{positive, Error, Result};
+use crate::contract::{check_pair, Load, LoadKind};
+use crate::error::{tolerance_in, Error, Result};
 use crate::grid::ContactGrid;
 use crate::influence::{Compliance, InfluenceModel};
 use crate::solve::{ElementState, Regime};
 use std::time::Instant;
 use stickslip_halfspace::Material;
+use stickslip_quad::Tolerance;
 
-/// The applied load: a tangential force $\mathbf T = (T_x, T_y)$ and optionally a twisting
-/// moment $M$ (counter-clockwise positive) about a centre.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FastLoad {
-    force: (f64, f64),
-    moment: Option<f64>,
-    centre: Option<(f64, f64)>,
-}
-
-impl FastLoad {
-    /// A force $(T_x, T_y)$ without moment (the rotation is then held at zero).
-    ///
-    /// # Errors
-    /// [`Error::OutOfDomain`] for a non-finite component.
-    pub fn force(tx: f64, ty: f64) -> Result<Self> {
-        finite("force T_x", tx)?;
-        finite("force T_y", ty)?;
-        Ok(Self { force: (tx, ty), moment: None, centre: None })
-    }
-
-    /// A force of magnitude $T \ge 0$ at `angle` radians from $+x$.
-    ///
-    /// # Errors
-    /// [`Error::OutOfDomain`] for $T < 0$ or non-finite input.
-    pub fn polar(magnitude: f64, angle: f64) -> Result<Self> {
-        crate::error::non_negative("force magnitude", magnitude)?;
-        finite("force angle", angle)?;
-        Self::force(magnitude * angle.cos(), magnitude * angle.sin())
-    }
-
-    /// A pure twisting moment $M$ about `centre` (`None`: the centre of the normal force).
-    ///
-    /// # Errors
-    /// [`Error::OutOfDomain`] for non-finite input.
-    pub fn moment(moment: f64, centre: Option<(f64, f64)>) -> Result<Self> {
-        Self::force(0.0, 0.0)?.with_moment(moment, centre)
-    }
-
-    /// Add a twisting moment $M$ about `centre` (`None`: the centre of the normal force); the
-    /// rotation $\omega$ becomes an unknown.
-    ///
-    /// # Errors
-    /// [`Error::OutOfDomain`] for non-finite input.
-    pub fn with_moment(mut self, moment: f64, centre: Option<(f64, f64)>) -> Result<Self> {
-        finite("moment", moment)?;
-        if let Some((x, y)) = centre {
-            finite("rotation centre x", x)?;
-            finite("rotation centre y", y)?;
-        }
-        self.moment = Some(moment);
-        self.centre = centre;
-        Ok(self)
-    }
-
-    /// The force $(T_x, T_y)$.
-    #[must_use]
-    pub fn force_components(&self) -> (f64, f64) {
-        self.force
-    }
-
-    /// The prescribed moment, if any.
-    #[must_use]
-    pub fn moment_value(&self) -> Option<f64> {
-        self.moment
-    }
-}
+/// The fast solver's name, as in its errors.
+pub(crate) const SOLVER_NAME: &str = "fast solver (semismooth Newton)";
 
 /// Which traction directions are admitted.
 #[derive(Debug, Clone, PartialEq)]
@@ -93,32 +31,34 @@ pub enum TractionDirections {
 /// Accuracy knob and limits of the fast solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FastConfig {
-    tolerance: f64,
+    tolerance: Tolerance,
     max_iterations: usize,
     max_cg: usize,
 }
 
 impl Default for FastConfig {
-    /// Relative residual $10^{-10}$, 100 Newton steps, 5,000 CG iterations per step.
+    /// Relative residual $10^{-10}$ ([`Tolerance::default`]), 100 Newton steps, 5,000 CG
+    /// iterations per step.
     fn default() -> Self {
-        Self { tolerance: 1e-10, max_iterations: 100, max_cg: 5000 }
+        Self { tolerance: Tolerance::default(), max_iterations: 100, max_cg: 5000 }
     }
 }
 
 impl FastConfig {
-    /// Relative residual target $\varepsilon \in [10^{-14}, 10^{-1}]$ and Newton step limit
-    /// $\ge 1$.
+    /// The relative residual targets the solver supports, inclusive: below $10^{-14}$ the
+    /// FFT products' rounding (about $10^{-15}$ relative) stops the residual from falling
+    /// further; above $10^{-1}$ the active set is not settled.
+    pub const TOLERANCE_RANGE: (f64, f64) = (1e-14, 1e-1);
+
+    /// Relative residual target $\varepsilon$ = `tolerance.rel()` in
+    /// [`FastConfig::TOLERANCE_RANGE`] (purely relative: `tolerance.abs() == 0`) and Newton
+    /// step limit $\ge 1$.
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] naming the offending input.
-    pub fn new(tolerance: f64, max_iterations: usize) -> Result<Self> {
-        if !(1e-14..=1e-1).contains(&tolerance) {
-            return Err(Error::OutOfDomain {
-                name: "fast solver tolerance",
-                value: tolerance,
-                allowed: "[1e-14, 1e-1]",
-            });
-        }
+    /// [`Error::ToleranceOutOfRange`] outside the range (never clamped);
+    /// [`Error::OutOfDomain`] for `max_iterations == 0`.
+    pub fn new(tolerance: Tolerance, max_iterations: usize) -> Result<Self> {
+        tolerance_in(SOLVER_NAME, tolerance, Self::TOLERANCE_RANGE)?;
         if max_iterations == 0 {
             return Err(Error::OutOfDomain {
                 name: "fast solver max_iterations",
@@ -147,8 +87,20 @@ impl FastConfig {
 
     /// The relative residual target.
     #[must_use]
-    pub fn tolerance(&self) -> f64 {
+    pub fn tolerance(&self) -> Tolerance {
         self.tolerance
+    }
+
+    /// The Newton step limit.
+    #[must_use]
+    pub fn max_iterations(&self) -> usize {
+        self.max_iterations
+    }
+
+    /// The conjugate-gradient limit per Newton step.
+    #[must_use]
+    pub fn max_cg(&self) -> usize {
+        self.max_cg
     }
 }
 
@@ -166,7 +118,7 @@ pub struct FastInfo {
     /// Final relative residual of the load constraints.
     pub load_residual: f64,
     /// Wall time of the iteration, seconds.
-    pub seconds: f64,
+    pub solve_seconds: f64,
     /// Wall time of planning the operator (kernel and FFT plans), seconds; 0 for
     /// [`FastProblem::solve_with`].
     pub setup_seconds: f64,
@@ -218,7 +170,7 @@ pub struct FastProblem<'a> {
     grid: &'a ContactGrid,
     bodies: [Material; 2],
     friction: f64,
-    load: FastLoad,
+    load: Load,
     directions: TractionDirections,
     model: InfluenceModel,
     config: FastConfig,
@@ -246,7 +198,8 @@ impl Mode {
 }
 
 impl<'a> FastProblem<'a> {
-    /// Validate $f > 0$, a non-empty grid and at least one deformable body.
+    /// Validate $f > 0$, a non-empty grid, at least one deformable body and the load (any
+    /// [`Load`]: a pure [`Load::Moment`] holds the net force at zero).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] or [`Error::EmptyGrid`] naming the offending input.
@@ -254,19 +207,10 @@ impl<'a> FastProblem<'a> {
         grid: &'a ContactGrid,
         bodies: [Material; 2],
         friction: f64,
-        load: FastLoad,
+        load: Load,
     ) -> Result<Self> {
-        positive("friction coefficient", friction)?;
-        if grid.is_empty() {
-            return Err(Error::EmptyGrid { reason: "the grid has no element" });
-        }
-        if bodies[0].is_rigid() && bodies[1].is_rigid() {
-            return Err(Error::OutOfDomain {
-                name: "bodies",
-                value: f64::INFINITY,
-                allowed: "at least one deformable body",
-            });
-        }
+        check_pair(grid, &bodies, friction)?;
+        load.validate()?;
         Ok(Self {
             grid,
             bodies,
@@ -286,12 +230,12 @@ impl<'a> FastProblem<'a> {
     /// [`TractionDirections::ParallelToForce`] without a force or with a moment, and for
     /// fixed directions with both a force and a moment.
     pub fn with_directions(mut self, directions: TractionDirections) -> Result<Self> {
-        let (tx, ty) = self.load.force;
+        let (tx, ty) = self.load.force_components();
         let has_force = tx != 0.0 || ty != 0.0;
         let directions = match directions {
             TractionDirections::Free => TractionDirections::Free,
             TractionDirections::ParallelToForce => {
-                if !has_force || self.load.moment.is_some() {
+                if !has_force || self.load.moment_value().is_some() {
                     return Err(Error::OutOfDomain {
                         name: "|T| for traction parallel to the force",
                         value: tx.hypot(ty),
@@ -308,10 +252,10 @@ impl<'a> FastProblem<'a> {
                         got: d.len(),
                     });
                 }
-                if has_force && self.load.moment.is_some() {
+                if has_force && self.load.moment_value().is_some() {
                     return Err(Error::OutOfDomain {
                         name: "moment with fixed directions and a force",
-                        value: self.load.moment.unwrap_or(0.0),
+                        value: self.load.moment_value().unwrap_or(0.0),
                         allowed: "fixed directions take either a force or a moment",
                     });
                 }
@@ -392,10 +336,12 @@ impl<'a> FastProblem<'a> {
     ///
     /// # Errors
     /// * [`Error::LengthMismatch`] if the operator belongs to a grid of another size;
-    /// * [`Error::OutOfDomain`] named `"tangential load |T|/(f P)"` (or the moment
-    ///   equivalent) when the load exceeds the friction capacity (no equilibrium: the bodies
-    ///   slide), named `"fast solver: no stick component left for the load constraints"`
-    ///   when the active set leaves no free component to carry the load;
+    /// * [`Error::CapacityExceeded`] when the load exceeds the friction capacity (no
+    ///   equilibrium: the bodies slide), with the load kind (force or moment), the load and
+    ///   the capacity;
+    /// * [`Error::NoStickLeft`] when the active set leaves no free component to carry the
+    ///   load (at or near gross slip, e.g. a force and a moment that together exceed what the
+    ///   contact carries);
     /// * [`Error::NotConverged`] (iterations, residual reached, tolerance) when the Newton
     ///   step limit is reached;
     /// * [`Error::NotPositiveDefinite`] if a conjugate-gradient curvature is not positive
@@ -413,14 +359,6 @@ impl<'a> FastProblem<'a> {
             });
         }
         Solver::new(self, op, scratch).run()
-    }
-}
-
-fn finite(name: &'static str, v: f64) -> Result<f64> {
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(Error::OutOfDomain { name, value: v, allowed: "finite" })
     }
 }
 
@@ -503,8 +441,8 @@ impl<'p, 'a> Solver<'p, 'a> {
         let g = p.grid;
         let n = g.len();
         let cap: Vec<f64> = g.pressure.iter().map(|pk| p.friction * pk).collect();
-        let centre = p.load.centre.unwrap_or_else(|| g.force_centroid());
-        let (tx, ty) = p.load.force;
+        let centre = p.load.centre().unwrap_or_else(|| g.force_centroid());
+        let (tx, ty) = p.load.force_components();
         let tmag = tx.hypot(ty);
         let that = if tmag > 0.0 { (tx / tmag, ty / tmag) } else { (1.0, 0.0) };
         let dirs = match &p.directions {
@@ -512,7 +450,7 @@ impl<'p, 'a> Solver<'p, 'a> {
             TractionDirections::ParallelToForce => Some(vec![that; n]),
             TractionDirections::Fixed(d) => Some(d.clone()),
         };
-        let (modes, loads) = match (&dirs, p.load.moment) {
+        let (modes, loads) = match (&dirs, p.load.moment_value()) {
             (None, None) => (vec![Mode::Ex, Mode::Ey], vec![tx, ty]),
             (None, Some(m)) => {
                 (vec![Mode::Ex, Mode::Ey, Mode::Rot(centre.0, centre.1)], vec![tx, ty, m])
@@ -661,7 +599,7 @@ impl<'p, 'a> Solver<'p, 'a> {
         let t0 = Instant::now();
         let n = self.n;
         let g = self.p.grid;
-        let tol = self.p.config.tolerance;
+        let tol = self.p.config.tolerance.rel();
         if let Some(s) = self.trivial_or_gross()? {
             return Ok(s);
         }
@@ -747,7 +685,18 @@ impl<'p, 'a> Solver<'p, 'a> {
             let eta = (0.1 * res).clamp(1e-6, 1e-4) * tighten;
             let qnorm = qx.iter().chain(&qy).map(|v| v * v).sum::<f64>().sqrt();
             let abs_floor = 0.05 * tol * qnorm;
-            let (x, dm, its) = self.pcg(&dofs, &diag_d, &rhs, &b, eta, abs_floor)?;
+            let (x, dm, its) =
+                self.pcg(&dofs, &diag_d, &rhs, &b, eta, abs_floor).map_err(|e| match e {
+                    Error::NoStickLeft { solver, load, free_components, .. } => {
+                        Error::NoStickLeft {
+                            solver,
+                            load,
+                            iteration: iterations + 1,
+                            free_components,
+                        }
+                    }
+                    e => e,
+                })?;
             cg_total += its;
             for (d, xv) in dofs.iter().zip(&x) {
                 qx[d.k] += xv * d.e.0;
@@ -773,10 +722,10 @@ impl<'p, 'a> Solver<'p, 'a> {
             }
             if iterations >= self.p.config.max_iterations {
                 return Err(Error::NotConverged {
-                    solver: "fast solver (semismooth Newton)",
+                    solver: SOLVER_NAME,
                     iterations,
                     residual: res.max(load_res),
-                    tolerance: self.p.config.tolerance,
+                    tolerance: tol,
                 });
             }
             first = false;
@@ -809,7 +758,7 @@ impl<'p, 'a> Solver<'p, 'a> {
             products: self.products,
             residual: res,
             load_residual: load_res,
-            seconds: t0.elapsed().as_secs_f64(),
+            solve_seconds: t0.elapsed().as_secs_f64(),
             setup_seconds: 0.0,
             fft_size: self.op.fft_size(),
         };
@@ -865,30 +814,26 @@ impl<'p, 'a> Solver<'p, 'a> {
             let ratio = self.loads[j].abs() / capj;
             if lone && ratio >= 1.0 - 1e-12 || ratio > 1.0 + 1e-12 {
                 let is_force = matches!(m, Mode::Ex | Mode::Ey | Mode::Along(..));
-                let force_only = is_force && self.p.load.moment.is_none();
+                let force_only = is_force && self.p.load.moment_value().is_none();
                 if force_only && ratio <= 1.0 + 1e-12 {
                     break; // gross slip under a force: handled below
                 }
-                return Err(Error::OutOfDomain {
-                    name: if is_force {
-                        "tangential load component / friction capacity f P"
-                    } else {
-                        "twisting moment / spin capacity"
-                    },
-                    value: ratio,
-                    allowed: "< 1: at or beyond it the bodies slide (gross slip)",
+                return Err(Error::CapacityExceeded {
+                    load: if is_force { LoadKind::Force } else { LoadKind::Moment },
+                    requested: self.loads[j].abs(),
+                    capacity: capj,
                 });
             }
         }
-        let (tx, ty) = self.p.load.force;
+        let (tx, ty) = self.p.load.force_components();
         let tmag = tx.hypot(ty);
         let fcap: f64 = self.cap.iter().map(|c| c * self.area).sum();
-        let gross = self.p.load.moment.is_none() && tmag >= fcap * (1.0 - 1e-12);
+        let gross = self.p.load.moment_value().is_none() && tmag >= fcap * (1.0 - 1e-12);
         if gross && tmag > fcap * (1.0 + 1e-12) {
-            return Err(Error::OutOfDomain {
-                name: "tangential load |T|/(f P)",
-                value: tmag / fcap,
-                allowed: "<= 1: beyond it the bodies slide (gross slip)",
+            return Err(Error::CapacityExceeded {
+                load: LoadKind::Force,
+                requested: tmag,
+                capacity: fcap,
             });
         }
         if !all_zero && !gross {
@@ -938,7 +883,7 @@ impl<'p, 'a> Solver<'p, 'a> {
                 products: self.products,
                 residual: 0.0,
                 load_residual: self.load_residual(&qx, &qy),
-                seconds: t0.elapsed().as_secs_f64(),
+                solve_seconds: t0.elapsed().as_secs_f64(),
                 setup_seconds: 0.0,
                 fft_size: self.op.fft_size(),
             },
@@ -1003,10 +948,11 @@ impl<'p, 'a> Solver<'p, 'a> {
                 w[i][j] = (0..nd).map(|d| bm[i * nd + d] * minv[d] * bm[j * nd + d]).sum();
             }
         }
-        let no_stick = || Error::OutOfDomain {
-            name: "fast solver: no stick component left for the load constraints",
-            value: nd as f64,
-            allowed: "a load the stick zone can carry (the load is at or near gross slip)",
+        let no_stick = || Error::NoStickLeft {
+            solver: SOLVER_NAME,
+            load: self.p.load.kind(),
+            iteration: 0,
+            free_components: nd,
         };
         if small_spd_solve(&w, nm, &[1.0; 3][..nm]).is_none() {
             return Err(no_stick());
@@ -1077,7 +1023,7 @@ impl<'p, 'a> Solver<'p, 'a> {
 }
 
 /// Resultant force and moment about `centre` of element tractions.
-fn resultant_moment(
+pub(crate) fn resultant_moment(
     g: &ContactGrid,
     qx: &[f64],
     qy: &[f64],

@@ -119,7 +119,7 @@ impl LpSolution {
 /// # Errors
 /// [`Error::LengthMismatch`], [`Error::OutOfDomain`] for bad input,
 /// [`Error::Infeasible`] if phase 1 ends with a positive artificial sum,
-/// [`Error::IterationLimit`] if the pivot budget is exhausted.
+/// [`Error::NotConverged`] if the pivot budget is exhausted.
 pub fn modified_lp(
     a: &[f64],
     g: &[f64],
@@ -240,7 +240,12 @@ fn run<T: Simplex>(
             break;
         }
         if iterations >= max_pivots {
-            return Err(Error::IterationLimit { iterations, objective });
+            return Err(Error::NotConverged {
+                solver: "modified LP",
+                iterations,
+                residual: if rhs_sum > 0.0 { objective / rhs_sum } else { objective },
+                tolerance: cfg.feasibility_tol,
+            });
         }
         let Some((r, s)) = tab.choose(cfg, &mut rejected) else {
             return Err(Error::Infeasible { iterations, objective });

@@ -24,8 +24,8 @@ use stickslip_traction::closed::Mindlin;
 use stickslip_traction::fast::TensorConvolution;
 use stickslip_traction::influence::{tensor_matrix, Compliance};
 use stickslip_traction::{
-    ContactGrid, ElementState, FastConfig, FastLoad, FastProblem, FastSolution, InfluenceModel,
-    Load, TractionDirections, TractionProblem,
+    ContactGrid, ElementState, FastConfig, FastProblem, FastSolution, InfluenceModel, Load,
+    TractionDirections, TractionProblem,
 };
 
 const PAGE: &str = "fast.md";
@@ -239,7 +239,7 @@ fn mindlin(out: &mut String) -> Result<Sphere, Error> {
     let mut kept = None;
     for (side, cells) in [(64, 25), (128, 50)] {
         let Case { grid, steel: s, mindlin: m, p, f, t: tl } = sphere_problem(side, cells)?;
-        let load = FastLoad::force(tl, 0.0).ctx(PAGE, "load")?;
+        let load = Load::force(tl, 0.0).ctx(PAGE, "load")?;
         let sol = FastProblem::new(&grid, [s, s], f, load)
             .ctx(PAGE, "problem")?
             .solve()
@@ -312,7 +312,7 @@ fn mindlin(out: &mut String) -> Result<Sphere, Error> {
 /// `Error::NotConverged`) reproduces the $k$-th iterate of the full solve.
 fn history(out: &mut String) -> Result<(), Error> {
     let c = sphere_problem(64, 25)?;
-    let load = FastLoad::force(c.t, 0.0).ctx(PAGE, "load")?;
+    let load = Load::force(c.t, 0.0).ctx(PAGE, "load")?;
     let base = FastProblem::new(&c.grid, [c.steel, c.steel], c.f, load).ctx(PAGE, "problem")?;
     let full = base.solve().ctx(PAGE, "fast solve")?;
     let tol_default = FastConfig::default().tolerance();
@@ -373,13 +373,12 @@ fn versus_lp(out: &mut String) -> Result<(), Error> {
             .ctx(PAGE, "LP problem")?
             .solve()
             .ctx(PAGE, "LP")?;
-        let fast =
-            FastProblem::new(&grid, [s, s], f, FastLoad::polar(tl, angle).ctx(PAGE, "load")?)
-                .ctx(PAGE, "fast problem")?
-                .with_directions(TractionDirections::ParallelToForce)
-                .ctx(PAGE, "directions")?
-                .solve()
-                .ctx(PAGE, "fast solve")?;
+        let fast = FastProblem::new(&grid, [s, s], f, Load::polar(tl, angle).ctx(PAGE, "load")?)
+            .ctx(PAGE, "fast problem")?
+            .with_directions(TractionDirections::ParallelToForce)
+            .ctx(PAGE, "directions")?
+            .solve()
+            .ctx(PAGE, "fast solve")?;
         let (c, sn) = (angle.cos(), angle.sin());
         let area = grid.element_area();
         let fmax = lp.force.iter().fold(0.0f64, |acc, v| acc.max(v.abs()));
@@ -430,7 +429,7 @@ fn energy(grid: &ContactGrid, sol: &FastSolution) -> f64 {
 
 /// The effect of the one-direction assumption on the $128^2$ sphere.
 fn one_direction(out: &mut String, sp: &Sphere) -> Result<(), Error> {
-    let load = FastLoad::force(sp.t, 0.0).ctx(PAGE, "load")?;
+    let load = Load::force(sp.t, 0.0).ctx(PAGE, "load")?;
     let par = FastProblem::new(&sp.grid, sp.bodies, sp.f, load)
         .ctx(PAGE, "problem")?
         .with_directions(TractionDirections::ParallelToForce)
