@@ -4,6 +4,7 @@
 
 use stickslip_scene::{run, ErrorKind, RunOptions, Scene};
 
+#[allow(clippy::result_large_err)]
 fn scene(src: &str) -> Result<stickslip_scene::Outcome, stickslip_scene::SceneError> {
     let s = Scene::from_toml_str(src, Some("g.toml".into()))?;
     run(&s, &RunOptions::default())
