@@ -23,6 +23,9 @@ pub enum ErrorKind {
     Unsupported,
     /// A physics routine failed on a scene that passed validation.
     Solver,
+    /// The solution was computed but failed its audit (resultants, Coulomb admissibility,
+    /// finiteness) and was not written.
+    Audit,
 }
 
 /// A problem with a scene, located as precisely as the input allows.

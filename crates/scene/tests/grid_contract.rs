@@ -10,7 +10,7 @@ fn scene(src: &str) -> Result<stickslip_scene::Outcome, stickslip_scene::SceneEr
     run(&s, &RunOptions::default())
 }
 
-const JOINT: &str = "[geometry]\nkind = \"patches\"\npatches = [\n  { shape = \"square\", centre = [\"-0.5 in\", 0.0], side = \"0.6 in\", pressure = \"10000 psi\" },\n  { shape = \"square\", centre = [\"0.5 in\", 0.0], side = \"0.6 in\", pressure = \"10000 psi\" },\n]\n[substrate]\nmodel = \"homogeneous\"\ne = \"30e6 psi\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nMOMENT\nfriction = 0.12\n[solver]\nmethod = \"lp\"\ngrid = 12\n";
+const JOINT: &str = "[geometry]\nkind = \"patches\"\npatches = [\n  { shape = \"square\", centre = [\"-0.5 in\", 0.0], side = \"0.6 in\", pressure = \"10000 psi\" },\n  { shape = \"square\", centre = [\"0.5 in\", 0.0], side = \"0.6 in\", pressure = \"10000 psi\" },\n]\n[substrate]\nmodel = \"homogeneous\"\ne = \"30e6 psi\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nMOMENT\nfriction = 0.12\n[solver]\nmethod = \"lp\"\ngrid = 16\n";
 
 #[test]
 fn a_negative_moment_turns_the_other_way_with_the_lp_and_the_fast_solver() {
@@ -30,12 +30,20 @@ fn a_negative_moment_turns_the_other_way_with_the_lp_and_the_fast_solver() {
 }
 
 #[test]
-fn a_load_beyond_the_lattice_capacity_is_refused_at_its_key_not_solved_all_slip() {
-    // 0.95 of f P on the patches; a coarse lattice covers less than the patches' area, so
-    // its discrete capacity is below the load.
-    let src = JOINT.replace("MOMENT", "tangential = \"820 lbf\"").replace("grid = 12", "grid = 4");
+fn a_lattice_that_does_not_resolve_the_patches_is_refused_before_solving() {
+    // At 4 elements across, the squares hold 1 x 1 cells of a lattice too coarse for their
+    // area: the lattice force would miss P (and the capacity f P) by far.
+    let src = JOINT
+        .replace("MOMENT", "tangential = \"820 lbf\"")
+        .replace("grid = 16", "grid = 4")
+        .replace("method = \"lp\"", "method = \"fast\"");
     let e = scene(&src).unwrap_err();
-    assert_eq!(e.kind, ErrorKind::Impossible, "{e}");
-    assert_eq!(e.key.as_deref(), Some("load.tangential"), "{e}");
-    assert_eq!(e.position.map(|p| p.0), Some(14), "{e}");
+    assert_eq!(e.kind, ErrorKind::OutOfRange, "{e}");
+    assert_eq!(e.key.as_deref(), Some("solver.grid"), "{e}");
+    assert_eq!(e.position.map(|p| p.0), Some(18), "{e}");
+    let hint = e.hint.clone().unwrap_or_default();
+    let min: usize = hint.trim_start_matches("use solver.grid >= ").parse().expect(&hint);
+    // The grid the hint names is accepted and solves.
+    let ok = scene(&src.replace("grid = 4", &format!("grid = {min}"))).unwrap();
+    assert!(ok.audit.passed);
 }

@@ -218,6 +218,49 @@ pub(crate) fn sliding(
     }
 }
 
+/// Show a closed-form partial-slip traction on the lattice consistently with the lattice's
+/// pressure: one discrete rule for p and q, so that the written arrays satisfy Coulomb's
+/// law and equilibrium exactly, as a grid solution does.
+///
+/// In each contact cell the closed form's ratio $\rho = q/p \in [0, f]$ (at the cell
+/// centre) splits the full-slip traction $f p_k$ into the part carried and a stick
+/// correction $c_k = (f - \rho)\,p_k \ge 0$ (zero in the slip zone). The cell traction is
+/// $q_k = f p_k - \lambda c_k$ with the one factor
+/// $\lambda = (\sum_k f p_k w_k - L)/\sum_k c_k w_k$ that makes the lattice resultant equal
+/// the applied load $L$ ($w_k = 1$ for a force, $w_k = r_k$ for a moment about the centre).
+/// $\lambda - 1$ is the sampling error of the lattice; $|q_k| \le f p_k$ holds while
+/// $0 \le \lambda \le 2$. Returns $\lambda$.
+pub(crate) fn sample_consistently(
+    lat: &mut Lattice,
+    f: f64,
+    area: f64,
+    load: f64,
+    cell: impl Fn(f64, f64) -> (f64, f64, (f64, f64)),
+) -> f64 {
+    // (i, j, p, c, w, direction)
+    let mut cells = Vec::new();
+    let (mut full, mut corr) = (0.0, 0.0);
+    for i in 0..lat.x.len() {
+        for j in 0..lat.y.len() {
+            if lat.stick[i][j] >= 0 {
+                let p = lat.p[i][j];
+                let (ratio, w, dir) = cell(lat.x[i], lat.y[j]);
+                let c = (f - ratio) * p;
+                full += f * p * w * area;
+                corr += c * w * area;
+                cells.push((i, j, p, c, dir));
+            }
+        }
+    }
+    let lambda = if corr > 0.0 { (full - load) / corr } else { 1.0 };
+    for (i, j, p, c, dir) in cells {
+        let q = f * p - lambda * c;
+        lat.qx[i][j] = q * dir.0;
+        lat.qy[i][j] = q * dir.1;
+    }
+    lambda
+}
+
 /// Mindlin's partial slip of a Hertz circle.
 pub(crate) fn mindlin(
     lat: &mut Lattice,
@@ -230,16 +273,20 @@ pub(crate) fn mindlin(
         .map_err(|e| solver_err("Mindlin", e))?;
     cx.ev.friction += 1;
     let astar = m.stick_radius();
-    let (c, s) = (force.direction.cos(), force.direction.sin());
+    let e = (force.direction.cos(), force.direction.sin());
+    let (a, p0, f) = (n.ax, n.p0, r.friction);
+    cx.sampling =
+        Some(sample_consistently(lat, f, n.grid.element_area(), force.magnitude, |x, y| {
+            let rr = x.hypot(y);
+            let p = p0 * ((1.0 - rr / a) * (1.0 + rr / a)).max(0.0).sqrt();
+            let ratio = if p > 0.0 { m.traction(rr) / p } else { f };
+            (ratio, 1.0, e)
+        }));
     for i in 0..lat.x.len() {
         for j in 0..lat.y.len() {
             if lat.stick[i][j] >= 0 {
-                let rr = lat.x[i].hypot(lat.y[j]);
-                let q = m.traction(rr);
                 cx.ev.friction += 1;
-                lat.qx[i][j] = q * c;
-                lat.qy[i][j] = q * s;
-                lat.stick[i][j] = i8::from(rr < astar);
+                lat.stick[i][j] = i8::from(lat.x[i].hypot(lat.y[j]) < astar);
             }
         }
     }
@@ -273,15 +320,21 @@ pub(crate) fn cattaneo(
         .map_err(|e| solver_err("Cattaneo", e))?;
     cx.ev.friction += 1;
     let sc = m.stick_scale();
-    let (c, s) = (force.direction.cos(), force.direction.sin());
+    let e = (force.direction.cos(), force.direction.sin());
+    let (p0, f) = (m.peak_pressure(), r.friction);
+    let local = move |x: f64, y: f64| if along_x { (x, y) } else { (y, x) };
+    cx.sampling =
+        Some(sample_consistently(lat, f, n.grid.element_area(), force.magnitude, |x, y| {
+            let (u, v) = local(x, y);
+            let p = p0 * (1.0 - (u / al).powi(2) - (v / ac).powi(2)).max(0.0).sqrt();
+            let ratio = if p > 0.0 { m.traction(u, v) / p } else { f };
+            (ratio, 1.0, e)
+        }));
     for i in 0..lat.x.len() {
         for j in 0..lat.y.len() {
             if lat.stick[i][j] >= 0 {
-                let (u, v) = if along_x { (lat.x[i], lat.y[j]) } else { (lat.y[j], lat.x[i]) };
-                let q = m.traction(u, v);
+                let (u, v) = local(lat.x[i], lat.y[j]);
                 cx.ev.friction += 1;
-                lat.qx[i][j] = q * c;
-                lat.qy[i][j] = q * s;
                 lat.stick[i][j] = i8::from((u / (sc * al)).powi(2) + (v / (sc * ac)).powi(2) < 1.0);
             }
         }

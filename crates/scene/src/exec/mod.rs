@@ -16,6 +16,7 @@
 // Scene errors carry file, position, key and hint; they are built on cold paths.
 #![allow(clippy::result_large_err)]
 
+mod audit;
 mod cycle;
 mod field;
 mod friction;
@@ -23,6 +24,9 @@ mod grid;
 mod lattice;
 mod normal;
 pub(crate) mod outcome;
+
+pub use audit::{LATTICE_AREA_TOLERANCE, SAMPLING_TOLERANCE};
+pub(crate) use lattice::grid_patches;
 mod rolling;
 mod surface;
 mod twist;
@@ -54,6 +58,9 @@ pub(crate) struct Ctx<'a> {
     pub residual: f64,
     pub elements: usize,
     pub solve_seconds: f64,
+    /// The factor lambda of a closed form shown on the lattice (see
+    /// `friction::sample_consistently`); `lambda - 1` is its sampling error.
+    pub sampling: Option<f64>,
 }
 
 impl Ctx<'_> {
@@ -84,6 +91,38 @@ pub(crate) fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect()
 }
 
+/// The refusal of a result that failed its audit: which checks failed, by how much, and
+/// the keys to change.
+fn audit_failure(plan: &Plan, out: &Outcome) -> SceneError {
+    let failed: Vec<&outcome::Check> = out.audit.checks.iter().filter(|c| !c.pass).collect();
+    let list = failed
+        .iter()
+        .map(|c| format!("{} = {:.3e} (limit {:.1e}: {})", c.name, c.value, c.limit, c.what))
+        .collect::<Vec<_>>()
+        .join("; ");
+    let (key, hint) = match failed.first().map(|c| c.name) {
+        Some(
+            "normal resultant" | "lattice sampling" | "tangential resultant" | "moment resultant",
+        ) => (Some("solver.grid"), "the lattice does not resolve the contact: raise solver.grid"),
+        Some("coulomb" | "residual") => {
+            (Some("solver.tolerance"), "tighten solver.tolerance (e.g. 1e-10) or raise solver.grid")
+        }
+        _ => (
+            None,
+            "the scene is beyond what the solvers handle in f64; please report it with the scene",
+        ),
+    };
+    let mut e = SceneError::new(
+        ErrorKind::Audit,
+        format!("the result failed its audit and was not written: {list}"),
+    )
+    .hint(hint);
+    if let Some(k) = key {
+        e = e.key(k);
+    }
+    locate(plan, e)
+}
+
 /// A stage's error with the file, and the line and column of its key when the scene came
 /// from a file.
 fn locate(plan: &Plan, e: SceneError) -> SceneError {
@@ -99,10 +138,13 @@ fn locate(plan: &Plan, e: SceneError) -> SceneError {
 
 /// Run `plan`, stage by stage, as planned.
 ///
+/// The result is audited (`exec/audit.rs`: finiteness, sizes, Coulomb admissibility,
+/// resultants, residual) before it is returned; `audit` in the result lists the checks.
+///
 /// # Errors
 /// A [`SceneError`] of kind [`ErrorKind::Solver`] (or [`ErrorKind::Impossible`] for a load a
-/// grid solver finds beyond the friction capacity) when a physics routine fails, or when the
-/// result has a non-finite value.
+/// grid solver finds beyond the friction capacity) when a physics routine fails, or of kind
+/// [`ErrorKind::Audit`] when the result fails a check.
 pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
     let t0 = Instant::now();
     let mut cx = Ctx {
@@ -119,6 +161,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         residual: 0.0,
         elements: 0,
         solve_seconds: 0.0,
+        sampling: None,
     };
     let parts = match &plan.recipe {
         Recipe::Line(r) => line(r, &mut cx),
@@ -143,7 +186,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
             effects.off.insert(e.effect.name().to_string(), e.reason.clone());
         }
     }
-    let out = Outcome {
+    let mut out = Outcome {
         title: plan.title.clone(),
         effects,
         contact: parts.contact,
@@ -163,26 +206,14 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         },
         rolling: parts.rolling,
         cycle: parts.cycle,
+        audit: Default::default(),
         evaluations: cx.ev,
-        notes: cx.notes,
+        notes: std::mem::take(&mut cx.notes),
         units: "SI",
     };
-    if let Some(path) = out.first_non_finite() {
-        return Err(SceneError::new(
-            ErrorKind::Solver,
-            format!("the solution has a non-finite value at {path}"),
-        )
-        .hint("the scene is beyond what the solvers handle in f64; please report it")
-        .in_file(plan.file.clone()));
-    }
-    let bad = [out.contact.a, out.contact.b, out.contact.p0, out.contact.normal_load]
-        .iter()
-        .chain([out.forces.tangential, out.forces.moment, out.forces.rolling_moment].iter())
-        .any(|v| !v.is_finite());
-    if bad {
-        return Err(SceneError::new(ErrorKind::Solver, "the contact solution is not finite")
-            .hint("the scene is beyond what the solvers handle in f64; please report it")
-            .in_file(plan.file.clone()));
+    out.audit = audit::audit(plan, &out, &cx);
+    if !out.audit.passed {
+        return Err(audit_failure(plan, &out));
     }
     Ok(out)
 }

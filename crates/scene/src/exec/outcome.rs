@@ -91,6 +91,7 @@ pub struct ContactOut {
     pub p0: f64,
     /// Indentation (m) where an absolute one exists (graded k > 0: eq 16; 3D Hertz: the
     /// approach of distant points), else null.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub indentation: Option<f64>,
     /// Normal load (N/m in 2D, N in 3D).
     pub normal_load: f64,
@@ -151,10 +152,13 @@ pub struct RigidOut {
     /// Tangential rigid-body displacement of the stick zone (m): relative (two bodies) in
     /// 3D; in 2D on a graded substrate the absolute u_x of the stick zone; null where none is
     /// defined.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub tangential: Option<f64>,
     /// Rigid rotation of the stick zone (rad, relative), twist only.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub rotation: Option<f64>,
     /// Per-body shares [substrate, indenter] of the tangential displacement or rotation.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub per_body: Option<[f64; 2]>,
 }
 
@@ -245,6 +249,7 @@ pub struct RollingOut {
     /// Start of the stick zone c (m).
     pub c: f64,
     /// Eq 25's constant (null for a homogeneous body, where no alpha exists).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub C2: Option<f64>,
     /// Tangential force Q (N/m).
     pub Q: f64,
@@ -269,6 +274,30 @@ pub struct CycleOut {
     pub delta: Vec<f64>,
     /// Energy dissipated per cycle, per body [substrate, indenter] (J).
     pub energy_per_cycle: [f64; 2],
+}
+
+/// One check of the audit: what was measured, the limit, and whether it passed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Check {
+    /// What is checked, e.g. "coulomb", "normal resultant".
+    pub name: &'static str,
+    /// What was measured (relative, or in the unit the description states).
+    pub value: f64,
+    /// The largest value that passes.
+    pub limit: f64,
+    /// value <= limit.
+    pub pass: bool,
+    /// What the value means.
+    pub what: String,
+}
+
+/// `audit` in result.json: every check run on the result before it is written.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct Audit {
+    /// True when every check passed (a result that fails is not written).
+    pub passed: bool,
+    /// The checks, in the order run.
+    pub checks: Vec<Check>,
 }
 
 /// The result of a run; serialises to result.json with the keys of docs/SCENES.md.
@@ -298,6 +327,8 @@ pub struct Outcome {
     /// Loading cycle, when asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cycle: Option<CycleOut>,
+    /// The checks the result passed before it was written.
+    pub audit: Audit,
     /// Evaluations per effect.
     pub evaluations: Evaluations,
     /// Modelling notes.
@@ -313,22 +344,20 @@ impl Outcome {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
     }
 
-    /// The first non-finite number, if any (a run never returns one: see [`crate::run`]).
+    /// The path of the first non-finite number, if any. serde_json writes NaN and the
+    /// infinities as `null`, and no number of a result is ever `null` otherwise (absent
+    /// values are left out), so every `null` is a non-finite number.
     pub(crate) fn first_non_finite(&self) -> Option<String> {
         let v = serde_json::to_value(self).ok()?;
         fn walk(v: &serde_json::Value, path: &str) -> Option<String> {
             match v {
-                // serde_json writes NaN and infinities as null; real nulls are the
-                // Option fields, which are listed here so they are not flagged.
                 serde_json::Value::Array(a) => {
                     a.iter().enumerate().find_map(|(i, x)| walk(x, &format!("{path}[{i}]")))
                 }
                 serde_json::Value::Object(o) => {
                     o.iter().find_map(|(k, x)| walk(x, &format!("{path}.{k}")))
                 }
-                serde_json::Value::Null if path.contains("surface") || path.contains("field") => {
-                    Some(path.to_string())
-                }
+                serde_json::Value::Null => Some(path.trim_start_matches('.').to_string()),
                 _ => None,
             }
         }

@@ -50,6 +50,62 @@ pub(crate) fn tolerance_for(scene: &Scene, what: &str, range: (f64, f64)) -> Res
     }
 }
 
+/// The lattice of a patch scene must resolve every patch: each patch holds element
+/// centres, no element belongs to two patches, and the lattice's normal force (pressure
+/// times the cells whose centres lie in a patch) is within
+/// [`crate::exec::LATTICE_AREA_TOLERANCE`] of the patches' force. Otherwise the refusal
+/// names the smallest grid found that does.
+pub(crate) fn lattice(scene: &Scene) -> Result<(), Issue> {
+    use crate::exec::LATTICE_AREA_TOLERANCE as TOL;
+    let Geometry::Patches(ps) = &scene.geometry else { return Ok(()) };
+    let patches = crate::exec::grid_patches(ps);
+    let (lo, hi) = crate::scene::patch_bounds(ps);
+    let force: f64 = ps.iter().map(crate::scene::Patch::force).sum();
+    // Relative error of the lattice force at `n` elements across the largest extent, or
+    // None when the lattice cannot hold the patches (empty or overlapping cells).
+    let error = |n: usize| -> Option<f64> {
+        let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
+        let grid =
+            stickslip_traction::ContactGrid::from_patches(h, h, (lo[0], lo[1]), &patches).ok()?;
+        Some((grid.total_normal_force() - force).abs() / force)
+    };
+    let n = scene.solver.grid;
+    let err = error(n);
+    if err.is_some_and(|e| e <= TOL) {
+        return Ok(());
+    }
+    // The error of a lattice falls roughly as 1/n: start from that estimate, then double.
+    let mut m = match err {
+        Some(e) => ((n as f64 * e / TOL).ceil() as usize).max(n + 1),
+        None => 2 * n,
+    };
+    let mut found = None;
+    while m <= 4096 {
+        if error(m).is_some_and(|e| e <= TOL) {
+            found = Some(m);
+            break;
+        }
+        m = m + m / 2 + 1;
+    }
+    let what = match err {
+        Some(e) => format!(
+            "grid = {n} covers the patches with a lattice whose normal force is {:.1} % off the patches' force (allowed {:.0} %)",
+            100.0 * e,
+            100.0 * TOL
+        ),
+        None => format!("grid = {n} is too coarse for the patches: a patch holds no element centre, or two patches share one"),
+    };
+    Err(issue(
+        ErrorKind::OutOfRange,
+        "solver.grid",
+        what,
+        match found {
+            Some(m) => format!("use solver.grid >= {m}"),
+            None => "the patches are too small for any lattice up to 4096 elements per side; enlarge them or split the scene".to_string(),
+        },
+    ))
+}
+
 /// Normal load implied by a prescribed contact size, where the geometry fixes it.
 fn implied_load(scene: &Scene) -> Option<f64> {
     let a = match scene.load.normal {
