@@ -194,13 +194,14 @@ fn fast_per_body_shares_follow_the_compliances() {
 #[test]
 fn loads_beyond_the_capacity_name_the_load_key() {
     let base = scene_text("fast_gasket_ring_force_and_twist.toml");
-    // A moment alone beyond the spin capacity f sum p_k r_k A_k (about 140 N m here): the
-    // fast solver's capacity check, reported as an impossible scene.
-    let s = parse(&base.replace("tangential = \"700 lbf\"\n", "").replace("80.0", "200.0"));
-    let e = run(&s, &RunOptions::default()).unwrap_err();
+    // A moment alone beyond the spin capacity f sum p_k r_k A_k (about 150 N m here): refused
+    // by validation, before any solver runs, at the moment's line.
+    let text = base.replace("tangential = \"700 lbf\"\n", "").replace("80.0", "200.0");
+    let e = Scene::from_toml_str(&text, Some("test.toml".into())).unwrap_err();
     println!("{e}");
     assert_eq!(e.kind, ErrorKind::Impossible);
     assert_eq!(e.key.as_deref(), Some("load.moment"));
+    assert!(e.position.is_some());
     // A force below f P (1312.5 lbf) with a moment on top that together exceed what the
     // contact can carry: the solver finds no stick element left and says which load to
     // reduce (not "please report").

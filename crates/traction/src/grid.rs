@@ -401,6 +401,25 @@ impl ContactGrid {
     }
 }
 
+impl ContactGrid {
+    /// The full-slip moment about the centre of the normal force,
+    /// $M_f = f\,h_xh_y\sum_k p_k\,\lvert\mathbf x_k - \mathbf c\rvert$: every element
+    /// slipping at $f p_k$ perpendicular to its radius. A twisting moment alone makes the
+    /// contact spin about the pivot where the full-slip traction has no resultant, and the
+    /// full-slip moment about any point is least there (its gradient is that resultant), so
+    /// the torsional capacity is at most $M_f$, and equal to it when the contact is
+    /// symmetric about $\mathbf c$ (Lubkin's $3\pi fPa/16$ for a Hertz circle, in the limit
+    /// of fine lattices). A moment above $M_f$ cannot be carried.
+    #[must_use]
+    pub fn spin_capacity(&self, friction: f64) -> f64 {
+        let (cx, cy) = self.force_centroid();
+        let sum: f64 = (0..self.len())
+            .map(|k| self.pressure[k] * (self.x[k] - cx).hypot(self.y[k] - cy))
+            .sum();
+        friction * self.element_area() * sum
+    }
+}
+
 fn check_count(name: &'static str, n: usize) -> Result<()> {
     if n < 2 {
         return Err(Error::OutOfDomain { name, value: n as f64, allowed: "at least 2" });
@@ -411,6 +430,23 @@ fn check_count(name: &'static str, n: usize) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// On a fine Hertz circle the full-slip moment tends to Lubkin's gross-slip moment
+    /// $3\pi fPa/16$ (an independent closed form: the integral of $f p_0\sqrt{1-r^2/a^2}$
+    /// times $r$ over the disc).
+    #[test]
+    fn spin_capacity_of_a_hertz_circle_is_lubkins() {
+        let (a, load, f) = (1e-3, 100.0, 0.3);
+        let want = 3.0 * std::f64::consts::PI * f * load * a / 16.0;
+        let mut last = f64::INFINITY;
+        for n in [32, 128, 512] {
+            let g = ContactGrid::hertz_circle(a, load, n).unwrap();
+            let err = (g.spin_capacity(f) - want).abs() / want;
+            assert!(err < last, "n = {n}: error {err} did not fall");
+            last = err;
+        }
+        assert!(last < 1e-4, "error {last} at n = 512");
+    }
 
     #[test]
     fn seed_circle_has_80_elements() {

@@ -163,6 +163,12 @@ fn grid_err(method: GridMethod, e: TractionError) -> SceneError {
                 .key("solver.tolerance")
                 .hint("raise solver.tolerance (e.g. 1e-8), or change solver.grid")
         }
+        E::Infeasible { .. } => SceneError::new(
+            ErrorKind::Solver,
+            format!("{name}: {e}"),
+        )
+        .key("solver.grid")
+        .hint("the modified LP finds no complementary solution on lattices this coarse (seen at 5 elements across under a moment); raise solver.grid, or use method = \"fast\""),
         _ => solver_err(name, e),
     }
 }

@@ -72,6 +72,7 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     let (surface_points, grid_elements, cost) = cost::estimate(scene, &effects)?;
     checks::capacity(scene)?;
     checks::lattice(scene)?;
+    checks::spin(scene)?;
     Ok(Plan {
         title: scene.title.clone(),
         file: scene.file.clone(),

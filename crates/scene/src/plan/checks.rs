@@ -106,6 +106,60 @@ pub(crate) fn lattice(scene: &Scene) -> Result<(), Issue> {
     ))
 }
 
+/// A twisting moment on an ellipse or patches against the contact's full-slip moment about
+/// the centre of pressure on the lattice (`ContactGrid::spin_capacity`, an upper bound of
+/// the torsional capacity): above it the contact spins and no solver can carry the moment.
+pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
+    use stickslip_traction::ContactGrid;
+    let l = &scene.load;
+    if l.moment == 0.0 || l.friction <= 0.0 {
+        return Ok(());
+    }
+    let n = scene.solver.grid;
+    let grid = match &scene.geometry {
+        Geometry::Ellipsoid(e) => {
+            let NormalLoad::Force(p) = l.normal else { return Ok(()) };
+            let (a, b) = match *e {
+                crate::scene::Ellipse::SemiAxes { a, b } => (a, b),
+                crate::scene::Ellipse::Radii { rx, ry } => {
+                    let sub = substrate_material(&scene.substrate)?;
+                    let ind = indenter_material(scene, &sub)?;
+                    let Ok(h) = stickslip_halfspace::hertz::HertzEllipse::new(
+                        rx,
+                        ry,
+                        p,
+                        composite_modulus(&sub, &ind),
+                    ) else {
+                        return Ok(());
+                    };
+                    (h.semi_axis_x(), h.semi_axis_y())
+                }
+            };
+            ContactGrid::hertz_ellipse(a, b, p, n, n)
+        }
+        Geometry::Patches(ps) => {
+            let (lo, hi) = crate::scene::patch_bounds(ps);
+            let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
+            ContactGrid::from_patches(h, h, (lo[0], lo[1]), &crate::exec::grid_patches(ps))
+        }
+        _ => return Ok(()),
+    };
+    let Ok(grid) = grid else { return Ok(()) };
+    let cap = grid.spin_capacity(l.friction);
+    if l.moment.abs() > cap {
+        return Err(issue(
+            ErrorKind::Impossible,
+            "load.moment",
+            format!(
+                "|M| = {} exceeds the full-slip moment of the contact about its centre of pressure, {cap:.6e} N m: the contact spins",
+                l.moment.abs()
+            ),
+            format!("reduce the moment below {cap:.4e} N m (less when a tangential force acts too)"),
+        ));
+    }
+    Ok(())
+}
+
 /// Normal load implied by a prescribed contact size, where the geometry fixes it.
 fn implied_load(scene: &Scene) -> Option<f64> {
     let a = match scene.load.normal {

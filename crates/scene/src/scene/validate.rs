@@ -121,6 +121,12 @@ fn patches(ps: &[Patch]) -> Result<(), Issue> {
     Ok(())
 }
 
+/// The largest grading exponent accepted: the graded kernels are integrated with
+/// Gauss–Jacobi rules of weight exponent $-k$, whose construction fails in f64 within
+/// about $10^{-14}$ of $k = 1$ (measured: $1 - 10^{-12}$ runs, $1 - 10^{-14}$ fails); this
+/// limit keeps three decades from that edge.
+pub const MAX_GRADING_EXPONENT: f64 = 1.0 - 1e-9;
+
 fn substrate(s: &Substrate) -> Result<(), Issue> {
     match *s {
         Substrate::Homogeneous(Elastic { e, nu }) => {
@@ -137,6 +143,14 @@ fn substrate(s: &Substrate) -> Result<(), Issue> {
                 .hint(
                     "0 <= k < 1 (k = 1 is the Gibson soil, where the surface integrals diverge)",
                 ));
+            }
+            if k > MAX_GRADING_EXPONENT {
+                return Err(Issue::new(
+                    ErrorKind::OutOfRange,
+                    "substrate.k",
+                    format!("grading exponent k = {k} is too close to 1 for the kernel quadrature"),
+                )
+                .hint(format!("use k <= {MAX_GRADING_EXPONENT} (the Gauss-Jacobi weight (1-t)^-k cannot be built in f64 closer to 1)")));
             }
             // beta^2 = (1+k)(1-(1+k)nu)/(1-nu) must be positive (FORMULAS.md A1); this more
             // specific check comes before the isotropic range.
