@@ -45,7 +45,9 @@ pub use exec::outcome::{
 pub use output::{write_outputs, Written};
 pub use overview::scenes_page;
 pub use plan::recipe::Recipe;
-pub use plan::{Cost, Effect, EffectPlan, Plan, Technique};
+pub use plan::{
+    Cost, Effect, EffectPlan, MachineLimits, Plan, Technique, DEFAULT_TIME_LIMIT_SECONDS,
+};
 
 /// Plan `scene` and execute the plan: [`Plan::new`] then [`Plan::execute`].
 ///

@@ -28,9 +28,11 @@ use std::fmt;
 mod build;
 mod checks;
 mod cost;
+mod machine;
 pub mod recipe;
 
 pub use cost::MEMORY_LIMIT_BYTES;
+pub use machine::{MachineLimits, DEFAULT_TIME_LIMIT_SECONDS};
 pub use recipe::Recipe;
 
 pub(crate) use crate::error::Issue;
