@@ -485,6 +485,10 @@ fn walk(
                 let mut hint = String::new();
                 if let Some(m) = did_you_mean(kname, &names) {
                     hint.push_str(&format!("did you mean `{m}`? "));
+                } else if !prefix.is_empty() && TOP.fields.iter().any(|f| f.name == kname) {
+                    hint.push_str(&format!(
+                        "[{kname}] is a table of its own: write its keys under a line [{kname}], not inside [{prefix}]; "
+                    ));
                 } else {
                     let homes: Vec<String> = tables()
                         .iter()
@@ -632,8 +636,11 @@ fn syntax_error(src: &str, e: &toml::de::Error) -> SceneError {
     if let Some(h) = header(line).filter(|h| bare(h)) {
         return err.key(h);
     }
-    if let Some((k, _)) = line.split_once('=') {
+    if let Some((k, v)) = line.split_once('=') {
         let k = k.trim();
+        if v.trim().is_empty() || v.trim().starts_with('#') {
+            err.message = format!("the value of `{k}` is missing after `=`");
+        }
         if bare(k) {
             let table = src[..line_start].lines().rev().find_map(|l| {
                 let t = l.trim();
