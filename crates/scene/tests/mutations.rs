@@ -5,6 +5,9 @@
 //!
 //! 256 cases by default; more with `PROPTEST_CASES=N`.
 
+// SceneError carries file, position, key and hint; tests return it as is.
+#![allow(clippy::result_large_err)]
+
 use proptest::prelude::*;
 use stickslip_scene::{Plan, Scene};
 
