@@ -1,22 +1,33 @@
 //! The `stickslip` command-line program.
 //!
-//! - `stickslip run [SCENE] [--out DIR] [--json]`: run a scene (the built-in default scene,
-//!   seed 000's Table 1 roller, when none is given): plan it (`Plan::new`, the plan `explain`
-//!   prints) and execute that plan (`Plan::execute`); write result.json, CSV and SVG plots
-//!   into DIR, or print the JSON with `--json`.
+//! - `stickslip run [SCENE] [--out DIR [--force]] [--json]`: run a scene (the built-in
+//!   default scene, seed 000's Table 1 roller, when none is given): plan it (`Plan::new`,
+//!   the plan `explain` prints) and execute that plan (`Plan::execute`); write result.json,
+//!   CSV and SVG plots into DIR, replacing it whole (`write_outputs_with`: an existing DIR
+//!   that is not a previous result is refused unless `--force`), or print the JSON with
+//!   `--json`.
 //! - `stickslip explain [SCENE]`: print the plan (effects on and off with reasons, the
 //!   technique per effect, the estimated cost) without computing anything.
 //! - `stickslip reproduce [--out DIR]`: the verification pages (stickslip-verification).
 //! - `stickslip accuracy [--quick|--full] [--out DIR]`: the accuracy-versus-time report
 //!   (stickslip-benches).
 //!
-//! Errors print the scene error (file:line:column, key, message, hint) and exit with status 1
-//! (2 for usage errors, from clap); no output file is left behind.
+//! Errors print the scene error (file:line:column, key, message, hint) on stderr; no output
+//! file is left behind. Exit status (the mapping is `ErrorKind::exit_code` of the scene
+//! crate):
+//!
+//! | status | meaning |
+//! |---|---|
+//! | 0 | done: the result was written (and audited); also when the reader of stdout closed it early (`stickslip run --json \| head`), which ends the program quietly |
+//! | 1 | I/O or internal error: a scene file or `--out` that cannot be read or written, a full disk, stdout that cannot be written (other than closed), a bug (a panic) |
+//! | 2 | refused before solving: TOML syntax, schema, unit, out of range, impossible, unsupported; and command-line usage errors |
+//! | 3 | solved but not trustworthy: the solution failed its audit, or a solver failed |
 
 // SceneError carries file, position, key and hint for the user; it is returned once per run.
 #![allow(clippy::result_large_err)]
 
-use std::io::IsTerminal;
+use std::fmt::Write as _;
+use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -26,13 +37,23 @@ use std::time::{Duration, Instant};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use stickslip_scene::{
-    write_outputs, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, Zones,
+    write_outputs_with, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, WriteOptions,
+    Zones,
 };
+
+/// The exit statuses, shown by `--help` and `run --help`.
+const EXIT_CODES: &str = "\
+Exit status:
+  0  done: the result was written (and audited); also when stdout was closed early
+  1  I/O or internal error (unreadable scene, unwritable --out, full disk, a bug)
+  2  refused before solving (syntax, schema, unit, out of range, impossible,
+     unsupported) or a command-line usage error
+  3  solved but not trustworthy (the audit failed, or a solver failed); nothing written";
 
 /// Frictional contact mechanics: run scenes, explain their plan, reproduce the published
 /// figures, report accuracy against time.
 #[derive(Debug, Parser)]
-#[command(name = "stickslip", version, about)]
+#[command(name = "stickslip", version, about, after_help = EXIT_CODES)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -41,15 +62,26 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Run a scene (the built-in default scene when none is given).
+    #[command(after_help = EXIT_CODES)]
     Run {
         /// Scene file (TOML); omit for the seed 000 Table 1 roller.
         scene: Option<PathBuf>,
-        /// Write result.json, CSV and SVG plots into this directory (all or nothing).
+        /// Write result.json, CSV and SVG plots into this directory, all or nothing: the
+        /// directory is replaced whole (no stale file of an earlier run stays). An existing
+        /// directory that is not a previous stickslip result is refused (see --force).
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
+        /// Replace the --out directory even if it holds files that are not a previous
+        /// stickslip result (they are deleted).
+        #[arg(long, requires = "out")]
+        force: bool,
         /// Print result.json to stdout.
         #[arg(long)]
         json: bool,
+        /// Refuse a run the planner estimates to take longer than this (seconds). Runs whose
+        /// estimated memory exceeds the memory available now are refused too.
+        #[arg(long, value_name = "SECONDS", default_value_t = stickslip_scene::DEFAULT_TIME_LIMIT_SECONDS, value_parser = positive_seconds)]
+        time_limit: f64,
     },
     /// Print the plan of a scene without computing anything.
     Explain {
@@ -74,6 +106,41 @@ enum Command {
         #[arg(long, value_name = "DIR", default_value = "docs")]
         out: PathBuf,
     },
+}
+
+/// Why a command ended without success.
+enum Failure {
+    /// A scene error (its kind gives the exit status).
+    Scene(SceneError),
+    /// The reader of stdout closed it: end quietly.
+    Closed,
+    /// Stdout could not be written (e.g. a full disk).
+    Stdout(std::io::Error),
+    /// Another failure, with its message and exit status.
+    Other(String, u8),
+}
+
+impl From<SceneError> for Failure {
+    fn from(e: SceneError) -> Self {
+        Failure::Scene(e)
+    }
+}
+
+/// Write `text` to stdout and flush; every write error is handled (never a panic).
+fn emit(text: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes()).and_then(|()| out.flush()).map_err(|e| {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            Failure::Closed
+        } else {
+            Failure::Stdout(e)
+        }
+    })
+}
+
+/// A line on stderr; a failing stderr is ignored (there is nowhere left to report it).
+fn note(text: &str) {
+    let _ = writeln!(std::io::stderr(), "{text}");
 }
 
 fn load(scene: Option<&PathBuf>) -> Result<Scene, SceneError> {
@@ -158,10 +225,25 @@ impl Bar {
     }
 }
 
-fn cmd_run(scene: Option<&PathBuf>, out: Option<&PathBuf>, json: bool) -> Result<(), SceneError> {
+/// A time limit: a positive, finite number of seconds.
+fn positive_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        _ => Err(format!("`{s}` is not a positive number of seconds (e.g. 3600)")),
+    }
+}
+
+fn cmd_run(
+    scene: Option<&PathBuf>,
+    out: Option<&PathBuf>,
+    force: bool,
+    json: bool,
+    time_limit: f64,
+) -> Result<(), Failure> {
     let scene = load(scene)?;
     // The plan `explain` prints; execution follows it and decides nothing again.
     let plan = Plan::new(&scene)?;
+    plan.check_machine(&stickslip_scene::MachineLimits::detect(time_limit))?;
     let bar = Bar::new();
     let cb = |p: Progress| bar.update(p);
     let opts = RunOptions { progress: Some(&cb) };
@@ -175,37 +257,43 @@ fn cmd_run(scene: Option<&PathBuf>, out: Option<&PathBuf>, json: bool) -> Result
     bar.finish();
     let outcome = result?;
     if let Some(dir) = out {
-        let w = write_outputs(&outcome, dir, scene.outputs.plots)?;
+        let w =
+            write_outputs_with(&outcome, dir, WriteOptions { plots: scene.outputs.plots, force })?;
+        for n in &w.notes {
+            note(&format!("note: {n}"));
+        }
         if !json {
-            eprintln!("wrote {} files to {}", w.files.len(), w.dir.display());
+            note(&format!("wrote {} files to {}", w.files.len(), w.dir.display()));
         }
     }
     if json {
-        println!("{}", outcome.to_json());
-    } else {
-        let c = &outcome.contact;
-        // 2D (plane strain) loads are per unit length.
-        let (fu, mu) = if scene.geometry.is_2d() { ("N/m", "N m/m") } else { ("N", "N m") };
-        println!("{}", outcome.title);
-        println!("  effects on: {}", outcome.effects.on.join(", "));
-        println!(
-            "  contact: a = {:.6e} m, b = {:.6e} m, p0 = {:.6e} Pa, normal load = {:.6e} {fu}",
-            c.a, c.b, c.p0, c.normal_load
-        );
-        if let Some(h) = c.indentation {
-            println!("  indentation: {h:.6e} m");
-        }
-        println!(
-            "  forces: tangential = {:.6e} {fu}, moment = {:.6e} {mu}, rolling moment = {:.6e} {mu}",
-            outcome.forces.tangential, outcome.forces.moment, outcome.forces.rolling_moment
-        );
-        println!("  {}", zones_line(&outcome.zones));
-        println!("  solver: {}", solver_line(&outcome.solver));
-        if out.is_none() {
-            println!("  (use --out DIR for result.json, CSV and plots, or --json)");
-        }
+        return emit(&(outcome.to_json() + "\n"));
     }
-    Ok(())
+    let mut t = String::new();
+    let c = &outcome.contact;
+    // 2D (plane strain) loads are per unit length.
+    let (fu, mu) = if scene.geometry.is_2d() { ("N/m", "N m/m") } else { ("N", "N m") };
+    let _ = writeln!(t, "{}", outcome.title);
+    let _ = writeln!(t, "  effects on: {}", outcome.effects.on.join(", "));
+    let _ = writeln!(
+        t,
+        "  contact: a = {:.6e} m, b = {:.6e} m, p0 = {:.6e} Pa, normal load = {:.6e} {fu}",
+        c.a, c.b, c.p0, c.normal_load
+    );
+    if let Some(h) = c.indentation {
+        let _ = writeln!(t, "  indentation: {h:.6e} m");
+    }
+    let _ = writeln!(
+        t,
+        "  forces: tangential = {:.6e} {fu}, moment = {:.6e} {mu}, rolling moment = {:.6e} {mu}",
+        outcome.forces.tangential, outcome.forces.moment, outcome.forces.rolling_moment
+    );
+    let _ = writeln!(t, "  {}", zones_line(&outcome.zones));
+    let _ = writeln!(t, "  solver: {}", solver_line(&outcome.solver));
+    if out.is_none() {
+        let _ = writeln!(t, "  (use --out DIR for result.json, CSV and plots, or --json)");
+    }
+    emit(&t)
 }
 
 /// The stick and slip zones in one line: element counts and the stick area fraction for
@@ -258,65 +346,85 @@ fn solver_line(s: &SolverOut) -> String {
     format!("{t} (run {:.3} s)", s.seconds)
 }
 
-fn cmd_explain(scene: Option<&PathBuf>) -> Result<(), SceneError> {
+fn cmd_explain(scene: Option<&PathBuf>) -> Result<(), Failure> {
     let scene = load(scene)?;
     let plan = Plan::new(&scene)?;
-    print!("{}", plan.explain());
-    Ok(())
+    emit(&plan.explain())
 }
 
 /// `reproduce`: the verification pages of stickslip-verification.
-fn cmd_reproduce(out: &std::path::Path) -> ExitCode {
-    match stickslip_verification::generate(out) {
-        Ok(files) => {
-            for f in &files {
-                println!("wrote {}", f.display());
-            }
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("error: reproduce: {e}");
-            ExitCode::from(1)
-        }
+fn cmd_reproduce(out: &std::path::Path) -> Result<(), Failure> {
+    let files = stickslip_verification::generate(out)
+        .map_err(|e| Failure::Other(format!("reproduce: {e}"), 1))?;
+    let mut t = String::new();
+    for f in &files {
+        let _ = writeln!(t, "wrote {}", f.display());
     }
+    emit(&t)
 }
 
 /// `accuracy`: the accuracy-versus-time report of stickslip-benches.
-fn cmd_accuracy(quick: bool, out: &std::path::Path) -> ExitCode {
+fn cmd_accuracy(quick: bool, out: &std::path::Path) -> Result<(), Failure> {
     use stickslip_benches::accuracy::{fmt_time, run as measure, write, Mode};
     let report = measure(if quick { Mode::Quick } else { Mode::Full });
+    let mut t = String::new();
     for m in &report.methods {
-        println!("{:<16} {}", m.slug, m.reading);
+        let _ = writeln!(t, "{:<16} {}", m.slug, m.reading);
         for s in &m.settings {
-            println!("    {:<12} error {:>10.3e}  {:>10}", s.label, s.error, fmt_time(s.seconds));
+            let _ = writeln!(
+                t,
+                "    {:<12} error {:>10.3e}  {:>10}",
+                s.label,
+                s.error,
+                fmt_time(s.seconds)
+            );
         }
     }
-    match write(&report, out) {
-        Ok(files) => {
-            for f in &files {
-                println!("wrote {}", f.display());
-            }
-            ExitCode::SUCCESS
+    emit(&t)?;
+    let files = write(&report, out).map_err(|e| {
+        Failure::Other(format!("cannot write the accuracy report to {}: {e}", out.display()), 1)
+    })?;
+    let mut t = String::new();
+    for f in &files {
+        let _ = writeln!(t, "wrote {}", f.display());
+    }
+    emit(&t)
+}
+
+fn dispatch(cli: &Cli) -> Result<(), Failure> {
+    match &cli.command {
+        Command::Run { scene, out, force, json, time_limit } => {
+            cmd_run(scene.as_ref(), out.as_ref(), *force, *json, *time_limit)
         }
-        Err(e) => {
-            eprintln!("error: cannot write the accuracy report to {}: {e}", out.display());
-            ExitCode::from(1)
-        }
+        Command::Explain { scene } => cmd_explain(scene.as_ref()),
+        Command::Reproduce { out } => cmd_reproduce(out),
+        Command::Accuracy { quick, full, out } => cmd_accuracy(*quick && !*full, out),
     }
 }
 
 fn main() -> ExitCode {
+    // Usage errors exit 2 and --help/--version 0 (clap).
     let cli = Cli::parse();
-    let result = match &cli.command {
-        Command::Run { scene, out, json } => cmd_run(scene.as_ref(), out.as_ref(), *json),
-        Command::Explain { scene } => cmd_explain(scene.as_ref()),
-        Command::Reproduce { out } => return cmd_reproduce(out),
-        Command::Accuracy { quick, full, out } => return cmd_accuracy(*quick && !*full, out),
-    };
+    // A panic is a bug: the default hook prints where; the status is 1 (internal error).
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| dispatch(&cli)));
     match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e}");
+        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(Err(Failure::Scene(e))) => {
+            note(&format!("error: {e}"));
+            ExitCode::from(e.exit_code())
+        }
+        // The reader has what it wanted (`| head`): end quietly, as ripgrep does.
+        Ok(Err(Failure::Closed)) => ExitCode::SUCCESS,
+        Ok(Err(Failure::Stdout(e))) => {
+            note(&format!("error: cannot write to standard output: {e}"));
+            ExitCode::from(1)
+        }
+        Ok(Err(Failure::Other(msg, code))) => {
+            note(&format!("error: {msg}"));
+            ExitCode::from(code)
+        }
+        Err(_) => {
+            note("error: internal error (a bug in stickslip); please report it with the scene");
             ExitCode::from(1)
         }
     }

@@ -28,6 +28,33 @@ pub enum ErrorKind {
     Audit,
 }
 
+impl ErrorKind {
+    /// The exit status of the `stickslip` program for an error of this kind, the one place
+    /// the mapping lives:
+    ///
+    /// | status | meaning | kinds |
+    /// |---|---|---|
+    /// | 0 | written (and audited) | (no error) |
+    /// | 1 | I/O or internal error | [`Io`](Self::Io) |
+    /// | 2 | refused before solving | [`Syntax`](Self::Syntax), [`Schema`](Self::Schema), [`Unit`](Self::Unit), [`OutOfRange`](Self::OutOfRange), [`Impossible`](Self::Impossible), [`Unsupported`](Self::Unsupported) |
+    /// | 3 | solved but not trustworthy | [`Solver`](Self::Solver), [`Audit`](Self::Audit) |
+    ///
+    /// Usage errors of the command line (clap) also exit 2; a panic (a bug) exits 1.
+    #[must_use]
+    pub const fn exit_code(self) -> u8 {
+        match self {
+            ErrorKind::Io => 1,
+            ErrorKind::Syntax
+            | ErrorKind::Schema
+            | ErrorKind::Unit
+            | ErrorKind::OutOfRange
+            | ErrorKind::Impossible
+            | ErrorKind::Unsupported => 2,
+            ErrorKind::Solver | ErrorKind::Audit => 3,
+        }
+    }
+}
+
 /// A problem with a scene, located as precisely as the input allows.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
@@ -47,6 +74,13 @@ pub struct SceneError {
 }
 
 impl SceneError {
+    /// The exit status of the `stickslip` program for this error
+    /// ([`ErrorKind::exit_code`]).
+    #[must_use]
+    pub const fn exit_code(&self) -> u8 {
+        self.kind.exit_code()
+    }
+
     pub(crate) fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
         Self { kind, file: None, position: None, key: None, message: message.into(), hint: None }
     }

@@ -42,7 +42,7 @@ pub use exec::outcome::{
     ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, GridZones, Outcome, Progress,
     RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
 };
-pub use output::{write_outputs, Written};
+pub use output::{write_outputs, write_outputs_with, WriteOptions, Written};
 pub use overview::scenes_page;
 pub use plan::recipe::Recipe;
 pub use plan::{

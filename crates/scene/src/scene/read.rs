@@ -22,6 +22,8 @@ use crate::error::{ErrorKind, SceneError};
 use crate::raw::{Qty, RawScene, SQty};
 use crate::units::{parse_quantity, Dim};
 
+mod schema;
+
 struct Reader<'a> {
     src: &'a str,
     file: Option<PathBuf>,
@@ -121,24 +123,9 @@ impl Reader<'_> {
 /// Read `src` (the text of `file`, if any) into a [`Scene`], not yet validated.
 pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError> {
     let cx = Reader { src, file, spans: RefCell::new(BTreeMap::new()) };
-    let raw: RawScene = toml::from_str(src).map_err(|e| {
-        let msg = e.message().trim().to_string();
-        let kind = if msg.contains("unknown field")
-            || msg.contains("missing field")
-            || msg.contains("invalid type")
-            || msg.contains("did not match any variant")
-        {
-            ErrorKind::Schema
-        } else {
-            ErrorKind::Syntax
-        };
-        let hint = if kind == ErrorKind::Schema {
-            "see docs/SCENES.md for the keys each table takes; units go in strings, e.g. \"10 mm\""
-        } else {
-            "the file must be valid TOML (https://toml.io)"
-        };
-        SceneError::new(kind, msg).at(src, e.span()).in_file(cx.file.clone()).hint(hint)
-    })?;
+    // serde's messages name Rust types, not keys: `schema::explain` says it in plain words.
+    let raw: RawScene =
+        toml::from_str(src).map_err(|e| schema::explain(src, &e).in_file(cx.file.clone()))?;
     let geometry = geometry(&cx, &raw)?;
     let substrate = substrate(&cx, &raw)?;
     let indenter = indenter(&cx, &raw)?;
