@@ -81,7 +81,8 @@ fn axis_limits() {
     for zeta in [0.01, 0.1, 0.48, 1.0, 3.0, 10.0] {
         let z = zeta * a;
         let want_z = -p0 / (1.0 + zeta * zeta);
-        let want_r = p0 * (-(1.0 + NU) * (1.0 - zeta * (1.0 / zeta).atan()) + 0.5 / (1.0 + zeta * zeta));
+        let want_r =
+            p0 * (-(1.0 + NU) * (1.0 - zeta * (1.0 / zeta).atan()) + 0.5 / (1.0 + zeta * zeta));
         let on = s.stress(NU, 0.0, 0.0, z).unwrap();
         st.add(on.zz, want_z, p0, "zz");
         st.add(on.xx, want_r, p0, "xx");

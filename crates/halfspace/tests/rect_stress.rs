@@ -76,7 +76,14 @@ fn nested(f: impl Fn(f64, f64) -> f64, r: &Rect, (x, y, z): (f64, f64, f64), abs
         v
     };
     let (bx, by) = (bps(x), bps(y));
-    gk(|xi| gk(|eta| f(xi, eta), r.y1, r.y2, &by, 1e-11, (abs * 0.1).max(1e-14 / z)), r.x1, r.x2, &bx, 1e-11, abs)
+    gk(
+        |xi| gk(|eta| f(xi, eta), r.y1, r.y2, &by, 1e-11, (abs * 0.1).max(1e-14 / z)),
+        r.x1,
+        r.x2,
+        &bx,
+        1e-11,
+        abs,
+    )
 }
 
 fn check_vs_quad(t: Traction, name: &str) {
@@ -89,9 +96,7 @@ fn check_vs_quad(t: Traction, name: &str) {
         let d2 = x * x + (y - 0.25) * (y - 0.25) + z * z;
         let floor = 1e-12 * (r.area() / (2.0 * std::f64::consts::PI * d2)).min(1.0);
         let want: Vec<f64> = (0..6)
-            .map(|k| {
-                nested(|xi, eta| point(&t, x - xi, y - eta, z)[k], &r, (x, y, z), floor)
-            })
+            .map(|k| nested(|xi, eta| point(&t, x - xi, y - eta, z)[k], &r, (x, y, z), floor))
             .collect();
         let scale = want.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for k in 0..6 {
