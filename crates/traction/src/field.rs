@@ -441,6 +441,35 @@ impl StressField {
     }
 }
 
+/// Tile side of the blocked transposes.
+const TILE: usize = 32;
+
+/// `dst[i * ld + j] = src[j * cols + i]` for `j < rows`, `i < cols` (blocked).
+fn transpose(src: &[C64], rows: usize, cols: usize, dst: &mut [C64], ld: usize) {
+    for jb in (0..rows).step_by(TILE) {
+        for ib in (0..cols).step_by(TILE) {
+            for j in jb..(jb + TILE).min(rows) {
+                for i in ib..(ib + TILE).min(cols) {
+                    dst[i * ld + j] = src[j * cols + i];
+                }
+            }
+        }
+    }
+}
+
+/// `dst[j * cols + i] = src[i * ld + j]` for `j < rows`, `i < cols` (blocked).
+fn transpose_rows(src: &[C64], cols: usize, ld: usize, rows: usize, dst: &mut [C64]) {
+    for ib in (0..cols).step_by(TILE) {
+        for jb in (0..rows).step_by(TILE) {
+            for i in ib..(ib + TILE).min(cols) {
+                for j in jb..(jb + TILE).min(rows) {
+                    dst[j * cols + i] = src[i * ld + j];
+                }
+            }
+        }
+    }
+}
+
 /// Smallest even 5-smooth integer $\ge n$ (fast FFT sizes).
 fn fast_size(n: usize) -> usize {
     let mut m = n.max(2);
@@ -672,7 +701,13 @@ impl FieldOperator {
     /// 2D real forward FFT of `lat` (row-major $M_y\times M_x$, rows `rows..` zero) into
     /// `s.spec` (layout `[i * my + j]`).
     fn forward(&self, lat: &[f64], rows: usize, s: &mut FieldScratch) {
-        let (mx, my, mxh) = (self.mx, self.my, self.mxh);
+        self.forward_rows(lat, rows, s);
+        self.forward_cols(rows, s);
+    }
+
+    /// Row FFTs of the first `rows` rows of `lat` into `s.rowspec`.
+    fn forward_rows(&self, lat: &[f64], rows: usize, s: &mut FieldScratch) {
+        let (mx, mxh) = (self.mx, self.mxh);
         for j in 0..rows {
             s.row.copy_from_slice(&lat[j * mx..(j + 1) * mx]);
             // Lengths are consistent by construction; realfft only errs on lengths.
@@ -682,12 +717,16 @@ impl FieldOperator {
                 &mut s.r2c,
             );
         }
+    }
+
+    /// Column FFTs of the first `rows` rows of `s.rowspec` (the rest zero) into `s.spec`.
+    fn forward_cols(&self, rows: usize, s: &mut FieldScratch) {
+        let (my, mxh) = (self.my, self.mxh);
+        // Blocked transpose rowspec[j * mxh + i] -> spec[i * my + j] (cache friendly).
         for i in 0..mxh {
-            let col = &mut s.spec[i * my..(i + 1) * my];
-            for (j, v) in col.iter_mut().enumerate() {
-                *v = if j < rows { s.rowspec[j * mxh + i] } else { C64::new(0.0, 0.0) };
-            }
+            s.spec[i * my + rows..(i + 1) * my].fill(C64::new(0.0, 0.0));
         }
+        transpose(&s.rowspec[..rows * mxh], rows, mxh, &mut s.spec, my);
         self.col_fwd.process_with_scratch(&mut s.spec, &mut s.col);
     }
 
@@ -698,11 +737,10 @@ impl FieldOperator {
         let (nx, ny) = (self.lattice.nx, self.lattice.ny);
         self.col_inv.process_with_scratch(&mut s.acc, &mut s.col);
         let scale = 1.0 / (mx as f64 * my as f64);
-        let rs = &mut s.rowspec[..mxh];
+        // Blocked transpose of the first ny rows: acc[i * my + j] -> rowspec[j * mxh + i].
+        transpose_rows(&s.acc, mxh, my, ny, &mut s.rowspec);
         for j in 0..ny {
-            for (i, v) in rs.iter_mut().enumerate() {
-                *v = s.acc[i * my + j];
-            }
+            let rs = &mut s.rowspec[j * mxh..(j + 1) * mxh];
             // The DC (and, for even sizes, Nyquist) bins of a real signal are real.
             rs[0].im = 0.0;
             if mx % 2 == 0 {
@@ -818,31 +856,38 @@ impl FieldOperator {
             for c in 0..6 {
                 let (ox, oy) = parity(c, t);
                 let k = &quad[t][c];
-                s.lat.fill(0.0);
+                // Rows dj = 0..ny, mirrored in x with the x parity; odd kernels vanish on
+                // their zero-offset column (and row), exactly.
                 for dj in 0..ny {
+                    let row = &mut s.lat[dj * mx..(dj + 1) * mx];
+                    row.fill(0.0);
+                    if oy && dj == 0 {
+                        continue;
+                    }
                     for di in 0..nx {
                         let v = k[dj * nx + di];
-                        for (sj, ej) in [(false, dj), (true, (my - dj) % my)] {
-                            for (si, ei) in [(false, di), (true, (mx - di) % mx)] {
-                                let neg = (si && ox) ^ (sj && oy);
-                                s.lat[ej * mx + ei] = if neg { -v } else { v };
-                            }
-                        }
+                        row[di] = v;
+                        row[(mx - di) % mx] = if ox { -v } else { v };
                     }
-                }
-                // Odd kernels vanish on their zero-offset row/column (the mirrored writes
-                // of di = 0 or dj = 0 leave -0.0 or the mirror's sign there; make it exact).
-                if ox {
-                    for dj in 0..my {
-                        s.lat[dj * mx] = 0.0;
+                    if ox {
+                        row[0] = 0.0;
                     }
-                }
-                if oy {
-                    s.lat[..mx].fill(0.0);
                 }
                 let lat = std::mem::take(&mut s.lat);
-                self.forward(&lat, my, s);
+                self.forward_rows(&lat, ny, s);
                 s.lat = lat;
+                // Rows my - dj are the rows dj times the y parity (their row FFTs too), and
+                // the rows in between are zero.
+                let mxh = self.mxh;
+                for dj in 1..ny {
+                    let (lo, hi) = s.rowspec.split_at_mut((my - dj) * mxh);
+                    let src = &lo[dj * mxh..(dj + 1) * mxh];
+                    for (d, v) in hi[..mxh].iter_mut().zip(src) {
+                        *d = if oy { -v } else { *v };
+                    }
+                }
+                s.rowspec[ny * mxh..(my - ny + 1) * mxh].fill(C64::new(0.0, 0.0));
+                self.forward_cols(my, s);
                 let imag = ox ^ oy;
                 out[t][c] = Some(s.spec.iter().map(|v| if imag { v.im } else { v.re }).collect());
             }
