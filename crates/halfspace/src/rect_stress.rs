@@ -52,9 +52,9 @@
 //! continuous for all real $X, Y$ (the denominators $R$, $R+z$, $s_x$, $s_y$, $X^2R + zY^2$ are
 //! positive), so the corner sum holds for field points inside, on the edges of, and outside the
 //! rectangle alike. The pressure rows reduce to Love's (1929) uniform-rectangle stresses; the
-//! shear rows are Cerruti's field integrated in closed form (derived here; checked against
-//! adaptive quadrature of [`crate::point_load::cerruti_stress`] in the tests, FORMULAS.md F
-//! gives only the surface displacements).
+//! shear rows are Cerruti's field integrated in closed form (derived here and stated in
+//! FORMULAS.md F, "Subsurface stresses below a uniformly loaded rectangle"; checked against
+//! adaptive quadrature of [`crate::point_load::cerruti_stress`] in the tests).
 //!
 //! # Accuracy
 //!

@@ -158,7 +158,7 @@ fn surface_limit() {
         st.add(o.xz, 0.0, 1.0, "xz outside");
         st.add(o.yz, 0.0, 1.0, "yz outside");
     }
-    st.check(1e-7);
+    st.check(tol::RECT_SURFACE_LIMIT);
 }
 
 /// Far from the rectangle the field is that of a point force of the same resultant, with a
@@ -175,12 +175,15 @@ fn far_field_is_point_force() {
             let scale = want.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1.0 / (z * z)) * area;
             for k in 0..6 {
                 let e = (got[k] - area * want[k]).abs() / scale;
-                assert!(e < 5e-3, "{t:?} ({x},{y},{z}) comp {k}: rel {e:e}");
+                assert!(e < tol::RECT_POINT_FORCE, "{t:?} ({x},{y},{z}) comp {k}: rel {e:e}");
             }
             let cs = comps(&stress_from_potential(NU, z, &t, &potential_derivatives(&r, x, y, z)));
             for k in 0..6 {
                 let e = (got[k] - cs[k]).abs() / scale;
-                assert!(e < 1e-9, "corner sum vs far rule {t:?} ({x},{y},{z}) comp {k}: {e:e}");
+                assert!(
+                    e < tol::RECT_CORNER_VS_FAR,
+                    "corner sum vs far rule {t:?} ({x},{y},{z}) comp {k}: {e:e}"
+                );
             }
         }
     }

@@ -34,6 +34,16 @@ mod tol {
     /// Periodic spectral kernel against the direct image sum over 41 x 41 periods: the
     /// truncated image tail of the absolutely convergent components (decaying like R^-4).
     pub const PERIODIC: f64 = 1e-5;
+    /// A uniform traction on a periodic lattice: sigma_zz, sigma_xz, sigma_yz are the mean
+    /// traction exactly (zero frequency only), up to the inverse FFT's rounding.
+    pub const PERIODIC_UNIFORM: f64 = 1e-13;
+    /// The classical maximum shear 0.31 p0 at z = 0.48 a is quoted to two digits.
+    pub const TWO_DIGITS: f64 = 5e-3;
+    /// Layers 0.01 a apart: the depth of the maximum is found to one layer spacing.
+    pub const LAYER_SPACING: f64 = 0.011;
+    /// The surface tensile peak p0 [(1 - 2 nu)/3 + pi (4 + nu) f / 8] against quadrature at
+    /// z = 1e-6 a, which approaches it like sqrt(z/a) (0.4 % there).
+    pub const SURFACE_PEAK: f64 = 1e-2;
 }
 
 fn comps(s: &Stress3) -> [f64; 6] {
@@ -207,9 +217,10 @@ fn hertz_sphere_on_axis_and_max_shear() {
     println!("[Hertz max shear] lattice {:.5} p0 at z = {:.3} a, (x, y) = ({}, {}); closed form {best:.5} p0 at {zb:.4} a",
         m.tresca.value, m.tresca.z, m.tresca.x, m.tresca.y);
     assert!((m.tresca.value - best).abs() / best < tol::HERTZ_AXIS);
-    assert!((m.tresca.z - zb).abs() <= 0.01 * a);
+    assert!((m.tresca.z - zb).abs() <= tol::LAYER_SPACING * a);
     assert!(m.tresca.x.abs() < 1e-12 && m.tresca.y.abs() < 1e-12);
-    assert!((m.tresca.value - 0.31).abs() < 0.005 && (m.tresca.z - 0.48).abs() < 0.011);
+    assert!((m.tresca.value - 0.31).abs() < tol::TWO_DIGITS);
+    assert!((m.tresca.z - 0.48).abs() < tol::LAYER_SPACING);
 }
 
 /// Adaptive Gauss–Kronrod with a relative tolerance.
@@ -338,7 +349,7 @@ fn sliding_sphere() {
             best.0, shallow.z, want.principal[0]);
         assert!((best.0 - want.principal[0]).abs() < tol::SLIDING * want.principal[0]);
         assert!((x + a).abs() < 0.1 * a && y.abs() < 1e-12, "peak at the trailing edge");
-        assert!((near_surface - surface).abs() < 1e-2 * surface);
+        assert!((near_surface - surface).abs() < tol::SURFACE_PEAK * surface);
     }
 }
 
@@ -464,9 +475,9 @@ fn periodic_matches_image_sum() {
     .unwrap();
     for layer in &f.layers {
         for k in 0..n {
-            assert!((layer.zz[k] + 1.5).abs() < 1e-13, "{}", layer.zz[k]);
-            assert!((layer.xz[k] + 0.4).abs() < 1e-13, "{}", layer.xz[k]);
-            assert!((layer.yz[k] - 0.3).abs() < 1e-13, "{}", layer.yz[k]);
+            assert!((layer.zz[k] + 1.5).abs() < tol::PERIODIC_UNIFORM, "{}", layer.zz[k]);
+            assert!((layer.xz[k] + 0.4).abs() < tol::PERIODIC_UNIFORM, "{}", layer.xz[k]);
+            assert!((layer.yz[k] - 0.3).abs() < tol::PERIODIC_UNIFORM, "{}", layer.yz[k]);
         }
     }
 }

@@ -21,8 +21,8 @@
 //! On the axis ($r = 0$: $M = z$, $N = a$) these reduce to Johnson, *Contact Mechanics*,
 //! eq. 3.45: $\sigma_{zz} = -p_0a^2/(a^2+z^2)$,
 //! $\sigma_{xx} = \sigma_{yy} = p_0\left[-(1+\nu)\left(1 - \frac za\arctan\frac az\right) +
-//! \frac{a^2}{2(a^2+z^2)}\right]$. FORMULAS.md E states the Hertz pressure, not this field; the
-//! tests check it against adaptive quadrature of Boussinesq's point-force stresses over the
+//! \frac{a^2}{2(a^2+z^2)}\right]$. FORMULAS.md E states the Hertz pressure and FORMULAS.md F
+//! ("Hertz sphere, full field") this form; the tests check it against adaptive quadrature of Boussinesq's point-force stresses over the
 //! Hertz pressure and against the axis forms.
 //!
 //! Accuracy: the $1/r^2$ and $1/r^4$ terms cancel near the axis, costing about
