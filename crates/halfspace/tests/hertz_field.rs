@@ -1,6 +1,7 @@
 //! The Hertz sphere's subsurface field (Huber; Hamilton 1983): against adaptive quadrature of
 //! Boussinesq's point-force stresses over the Hertz pressure, the axis closed forms of Johnson
 //! eq. 3.45, and the classical maximum shear 0.31 p0 at z = 0.48 a (nu = 0.3).
+#![allow(clippy::needless_range_loop)] // stress components are indexed 0..6 in parallel arrays
 mod common;
 use common::quad::gk;
 use common::{tol, ErrStats};

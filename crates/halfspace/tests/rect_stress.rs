@@ -1,6 +1,7 @@
 //! Subsurface stress below a uniformly loaded rectangle (`rect_stress`): against nested
 //! adaptive quadrature of the Boussinesq and Cerruti point-force stresses over the rectangle,
 //! the surface limits, the far field (point force), and equilibrium of a layer.
+#![allow(clippy::needless_range_loop)] // stress components are indexed 0..6 in parallel arrays
 mod common;
 use common::quad::gk;
 use common::{tol, ErrStats};

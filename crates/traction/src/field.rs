@@ -904,10 +904,10 @@ impl FieldOperator {
         let Lattice { nx, ny, hx, hy, .. } = self.lattice;
         let (my, mxh) = (self.my, self.mxh);
         let mut out: [[Option<Vec<f64>>; 6]; 3] = Default::default();
-        for t in 0..3 {
-            if loads[t] {
-                for c in 0..6 {
-                    out[t][c] = Some(vec![0.0; mxh * my]);
+        for (ot, &on) in out.iter_mut().zip(&loads) {
+            if on {
+                for o in ot.iter_mut() {
+                    *o = Some(vec![0.0; mxh * my]);
                 }
             }
         }

@@ -3,6 +3,7 @@
 //! axis), the sliding sphere against quadrature of Boussinesq + Cerruti over the Hertz
 //! traction, a long strip against the 2D McEwen field, the periodic option against a direct
 //! image sum, and bad input.
+#![allow(clippy::needless_range_loop)] // stress components are indexed 0..6 in parallel arrays
 use std::f64::consts::PI;
 use stickslip_halfspace::hertz::sphere_field::hertz_sphere_stress;
 use stickslip_halfspace::mcewen::stress_potential;
