@@ -521,3 +521,33 @@ fn bad_input_is_an_error() {
     let f = subsurface_field(l, 0.3, &SurfaceTraction::default(), &[1.0], cfg).unwrap();
     assert!(f.layers[0].zz.iter().all(|v| *v == 0.0));
 }
+
+/// A contact grid maps onto the lattice: every element centre is its cell's centre and the
+/// scattered arrays carry its values.
+#[test]
+fn lattice_from_contact_grid() {
+    let g = stickslip_traction::ContactGrid::hertz_circle(1.0, 10.0, 21).unwrap();
+    let (l, cell) = Lattice::from_grid(&g).unwrap();
+    let p = l.scatter(&cell, &g.pressure).unwrap();
+    for (k, &c) in cell.iter().enumerate() {
+        let (x, y) = l.centre(c % l.nx, c / l.nx);
+        assert!((x - g.x[k]).abs() < 1e-12 && (y - g.y[k]).abs() < 1e-12);
+        assert_eq!(p[c], g.pressure[k]);
+    }
+    let total: f64 = p.iter().sum::<f64>() * l.hx * l.hy;
+    assert!((total - 10.0).abs() < 1e-9);
+    assert!(matches!(l.scatter(&cell, &g.pressure[1..]), Err(Error::LengthMismatch { .. })));
+    let f = subsurface_field(
+        l,
+        0.3,
+        &SurfaceTraction { p: &p, ..Default::default() },
+        &[0.5],
+        FieldConfig::default(),
+    )
+    .unwrap();
+    let (x, y) = l.centre(3, 7);
+    let want = direct_stress(&l, 0.3, &SurfaceTraction { p: &p, ..Default::default() }, x, y, 0.5)
+        .unwrap();
+    let got = f.layers[0].stress(7 * l.nx + 3);
+    assert!((got.zz - want.zz).abs() < 1e-12 * want.zz.abs().max(1.0));
+}
