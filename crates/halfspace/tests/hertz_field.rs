@@ -118,3 +118,65 @@ fn classical_max_shear() {
     assert!((best - 0.31).abs() < 0.005, "max shear {best}");
     assert!((zb - 0.48).abs() < 0.005, "at z = {zb}");
 }
+
+/// The sliding sphere reference (closed-form pressure part + quadrature of Cerruti for the
+/// shear): no shear gives the closed form; the surface traction is recovered as z -> 0; the
+/// trailing-edge tension approaches its closed form; and a Cartesian nested quadrature of
+/// Boussinesq + Cerruti (a different parametrisation) agrees.
+#[test]
+fn sliding_sphere_reference() {
+    use stickslip_halfspace::hertz::sphere_field::{
+        sliding_sphere_stress, sliding_trailing_edge_tension,
+    };
+    use stickslip_halfspace::point_load::cerruti_stress;
+    let (a, p0) = (1.0, 1.0);
+    let s0 = sliding_sphere_stress(a, p0, 0.0, NU, (0.3, 0.2, 0.5), 1e-10).unwrap();
+    assert_eq!(s0.stress, hertz_sphere_stress(a, p0, NU, 0.3, 0.2, 0.5));
+    let f = 0.25;
+    // Surface limit inside the contact: sigma_xz -> -f p, sigma_zz -> -p (O(z) corrections).
+    let (x, y) = (0.3, 0.2);
+    let s = sliding_sphere_stress(a, p0, f, NU, (x, y, 1e-6), 1e-10).unwrap();
+    let p = (1.0f64 - x * x - y * y).sqrt();
+    assert!((s.stress.xz + f * p).abs() < tol::SLIDING_SURFACE, "{:?}", s.stress);
+    assert!((s.stress.zz + p).abs() < tol::SLIDING_SURFACE, "{:?}", s.stress);
+    // Trailing edge: sqrt(z/a) approach, 0.4 % at z = 1e-6 a.
+    let t = sliding_sphere_stress(a, p0, f, NU, (-a, 0.0, 1e-6), 1e-10).unwrap();
+    let want = sliding_trailing_edge_tension(p0, NU, f);
+    assert!((t.stress.xx - want).abs() < 1e-2 * want, "{} vs {want}", t.stress.xx);
+    // Cartesian nested quadrature of the shear part at two interior points.
+    let mut st = ErrStats::new("sliding sphere reference vs Cartesian quadrature");
+    for &(x, y, z) in &[(0.2, -0.3, 0.4), (-0.9, 0.1, 0.2), (1.3, 0.4, 0.6)] {
+        let got = sliding_sphere_stress(a, p0, f, NU, (x, y, z), 1e-11).unwrap();
+        assert!(got.error < 1e-9, "error estimate {}", got.error);
+        let normal = comps(&hertz_sphere_stress(a, p0, NU, x, y, z));
+        let g = comps(&got.stress);
+        for k in 0..6 {
+            let shear = gk(
+                |xi| {
+                    let w = (a * a - xi * xi).max(0.0).sqrt();
+                    gk(
+                        |eta| {
+                            let q =
+                                f * p0 * (1.0 - (xi * xi + eta * eta) / (a * a)).max(0.0).sqrt();
+                            q * comps(&cerruti_stress(NU, 1.0, x - xi, y - eta, z))[k]
+                        },
+                        -w,
+                        w,
+                        &[y],
+                        1e-11,
+                        1e-13,
+                    )
+                },
+                -a,
+                a,
+                &[x],
+                1e-11,
+                1e-12,
+            );
+            st.add(g[k], normal[k] + shear, p0, &format!("({x}, {y}, {z}) comp {k}"));
+        }
+    }
+    st.check(tol::HERTZ_FIELD_QUAD);
+    assert!(sliding_sphere_stress(a, p0, f, NU, (0.0, 0.0, 0.0), 1e-10).is_err());
+    assert!(sliding_sphere_stress(a, p0, f, NU, (0.0, 0.0, 1.0), 1.0).is_err());
+}

@@ -44,6 +44,9 @@ pub mod tol {
     /// Hertz sphere off-axis formula 1e-3 a from the axis against the axis closed form: the
     /// field changes by O(r^2/a^2) = 1e-6 there, and the cancellation costs eps a^2/r^2.
     pub const HERTZ_NEAR_AXIS: f64 = 1e-5;
+    /// Sliding sphere 1e-6 a below the surface inside the contact: the field differs from the
+    /// surface traction by O(z/a) times gradients of order 1, plus the quadrature's 1e-10.
+    pub const SLIDING_SURFACE: f64 = 1e-5;
 }
 
 /// Parse a CSV table: skip `#` comments and the header line, return rows of f64.
