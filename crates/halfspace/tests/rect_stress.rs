@@ -207,3 +207,38 @@ fn bad_input_is_an_error() {
     assert!(checked_rect_stress(NU, &flipped, &t, 0.0, 0.0, 1.0).is_err());
     assert!(checked_rect_stress(NU, &r, &t, 0.1, 0.2, 0.3).is_ok());
 }
+
+/// Equilibrium of the layer above a plane z = c: the tractions on the plane balance the
+/// applied forces, iint sigma_zz = -p A, iint sigma_xz = -qx A, iint sigma_yz = -qy A
+/// (integrals over the whole plane by nested adaptive quadrature on infinite ranges).
+#[test]
+fn layer_equilibrium() {
+    let r = Rect::new(-0.5, 0.5, -0.25, 0.75).unwrap();
+    let t = Traction { p: 1.5, qx: 0.4, qy: -0.3 };
+    let mut st = ErrStats::new("layer equilibrium");
+    for c in [0.3, 2.0] {
+        let plane = |k: usize| {
+            gk(
+                |x| {
+                    gk(
+                        |y| comps(&rect_stress(NU, &r, &t, x, y, c))[k],
+                        f64::NEG_INFINITY,
+                        f64::INFINITY,
+                        &[-0.25, 0.75],
+                        1e-11,
+                        1e-14,
+                    )
+                },
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                &[-0.5, 0.5],
+                1e-11,
+                1e-13,
+            )
+        };
+        st.add(plane(2), -t.p * r.area(), 1.0, &format!("zz at z = {c}"));
+        st.add(plane(4), -t.qx * r.area(), 1.0, &format!("xz at z = {c}"));
+        st.add(plane(5), -t.qy * r.area(), 1.0, &format!("yz at z = {c}"));
+    }
+    st.check(tol::QUAD);
+}
