@@ -590,6 +590,8 @@ pub struct FieldScratch {
     r2c: Vec<C64>,
     c2r: Vec<C64>,
     col: Vec<C64>,
+    quad: [[Vec<f64>; 6]; 3],
+    nodes: [Vec<[f64; 25]>; 2],
 }
 
 /// The planned subsurface-field operator of one lattice and material: FFT plans, sizes and
@@ -695,6 +697,8 @@ impl FieldOperator {
                     .get_inplace_scratch_len()
                     .max(self.col_inv.get_inplace_scratch_len())
             ],
+            quad: Default::default(),
+            nodes: Default::default(),
         }
     }
 
@@ -796,13 +800,41 @@ impl FieldOperator {
         loads: [bool; 3],
         s: &mut FieldScratch,
     ) -> Result<LayerKernel> {
+        let mut k = LayerKernel { z, spec: Default::default() };
+        self.layer_kernel_into(z, loads, &mut k, s)?;
+        Ok(k)
+    }
+
+    /// [`FieldOperator::layer_kernel`] into an existing kernel, reusing its buffers (no
+    /// allocation after the first layer of a worker).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for a depth that is not finite and positive.
+    pub fn layer_kernel_into(
+        &self,
+        z: f64,
+        loads: [bool; 3],
+        kernel: &mut LayerKernel,
+        s: &mut FieldScratch,
+    ) -> Result<()> {
         check_depth(z)?;
         let map = StressMap::new(self.nu, z);
-        let spec = match self.boundary {
-            Boundary::Free => self.free_kernel(z, loads, &map, s),
-            Boundary::Periodic => self.periodic_kernel(z, loads, &map),
-        };
-        Ok(LayerKernel { z, spec })
+        kernel.z = z;
+        let n = self.mxh * self.my;
+        for (kt, &on) in kernel.spec.iter_mut().zip(&loads) {
+            for kc in kt.iter_mut() {
+                if !on {
+                    *kc = None;
+                } else if kc.as_ref().is_none_or(|v| v.len() != n) {
+                    *kc = Some(vec![0.0; n]);
+                }
+            }
+        }
+        match self.boundary {
+            Boundary::Free => self.free_kernel(z, loads, &map, s, &mut kernel.spec),
+            Boundary::Periodic => self.periodic_kernel(z, loads, &map, &mut kernel.spec),
+        }
+        Ok(())
     }
 
     fn free_kernel(
@@ -811,26 +843,30 @@ impl FieldOperator {
         loads: [bool; 3],
         map: &StressMap,
         s: &mut FieldScratch,
-    ) -> [[Option<Vec<f64>>; 6]; 3] {
+        out: &mut [[Option<Vec<f64>>; 6]; 3],
+    ) {
         let Lattice { nx, ny, hx, hy, .. } = self.lattice;
         let (mx, my) = (self.mx, self.my);
-        // Quadrant kernels K[t][c][dj * nx + di], offsets di, dj >= 0.
-        let mut quad: [[Vec<f64>; 6]; 3] = Default::default();
+        // Quadrant kernels K[t][c][dj * nx + di], offsets di, dj >= 0 (scratch buffers).
+        let mut quad = std::mem::take(&mut s.quad);
         for (t, q) in quad.iter_mut().enumerate() {
             if loads[t] {
                 for v in q.iter_mut() {
-                    *v = vec![0.0; nx * ny];
+                    v.resize(nx * ny, 0.0);
                 }
             }
         }
         // Nodes at X = (u - 1/2) hx, u = 0..=nx; two rows of nodes at a time.
-        let node_row = |v: usize| -> Vec<[f64; 25]> {
+        let node_row = |v: usize, row: &mut Vec<[f64; 25]>| {
             let y = (v as f64 - 0.5) * hy;
-            (0..=nx).map(|u| flat(&corner_derivatives((u as f64 - 0.5) * hx, y, z))).collect()
+            row.clear();
+            row.extend((0..=nx).map(|u| flat(&corner_derivatives((u as f64 - 0.5) * hx, y, z))));
         };
-        let mut lo = node_row(0);
+        let mut lo = std::mem::take(&mut s.nodes[0]);
+        let mut hi = std::mem::take(&mut s.nodes[1]);
+        node_row(0, &mut lo);
         for dj in 0..ny {
-            let hi = node_row(dj + 1);
+            node_row(dj + 1, &mut hi);
             for di in 0..nx {
                 // X1 = (di + 1/2) hx (node di + 1), X2 = (di - 1/2) hx (node di); same in y.
                 let mut d = [0.0; 25];
@@ -846,9 +882,9 @@ impl FieldOperator {
                     }
                 }
             }
-            lo = hi;
+            std::mem::swap(&mut lo, &mut hi);
         }
-        let mut out: [[Option<Vec<f64>>; 6]; 3] = Default::default();
+        s.nodes = [lo, hi];
         for t in 0..3 {
             if !loads[t] {
                 continue;
@@ -889,10 +925,14 @@ impl FieldOperator {
                 s.rowspec[ny * mxh..(my - ny + 1) * mxh].fill(C64::new(0.0, 0.0));
                 self.forward_cols(my, s);
                 let imag = ox ^ oy;
-                out[t][c] = Some(s.spec.iter().map(|v| if imag { v.im } else { v.re }).collect());
+                if let Some(o) = out[t][c].as_mut() {
+                    for (o, v) in o.iter_mut().zip(&s.spec) {
+                        *o = if imag { v.im } else { v.re };
+                    }
+                }
             }
         }
-        out
+        s.quad = quad;
     }
 
     fn periodic_kernel(
@@ -900,17 +940,10 @@ impl FieldOperator {
         z: f64,
         loads: [bool; 3],
         map: &StressMap,
-    ) -> [[Option<Vec<f64>>; 6]; 3] {
+        out: &mut [[Option<Vec<f64>>; 6]; 3],
+    ) {
         let Lattice { nx, ny, hx, hy, .. } = self.lattice;
         let (my, mxh) = (self.my, self.mxh);
-        let mut out: [[Option<Vec<f64>>; 6]; 3] = Default::default();
-        for (ot, &on) in out.iter_mut().zip(&loads) {
-            if on {
-                for o in ot.iter_mut() {
-                    *o = Some(vec![0.0; mxh * my]);
-                }
-            }
-        }
         // Aliases: e^{-kappa z} < 1e-17 beyond |k| > 40/z, i.e. |m| > 40 h/(2 pi z) + 1.
         let mmx = (40.0 * hx / (2.0 * PI * z)).ceil() as i64 + 1;
         let mmy = (40.0 * hy / (2.0 * PI * z)).ceil() as i64 + 1;
@@ -986,7 +1019,6 @@ impl FieldOperator {
                 }
             }
         }
-        out
     }
 
     /// The stresses of one layer: for each component the spectrum
@@ -1058,14 +1090,19 @@ impl FieldOperator {
         let mut s = self.make_scratch();
         let load = self.load_spectra(t, &mut s)?;
         let present = [0, 1, 2].map(|k| load.spec[k].is_some());
-        let one = |z: f64, s: &mut FieldScratch| -> Result<StressLayer> {
-            let k = self.layer_kernel(z, present, s)?;
-            self.apply(&k, &load, s)
+        let one = |z: f64, (s, k): &mut (FieldScratch, LayerKernel)| -> Result<StressLayer> {
+            self.layer_kernel_into(z, present, k, s)?;
+            self.apply(k, &load, s)
         };
+        let fresh = || LayerKernel { z: 0.0, spec: Default::default() };
         let layers: Result<Vec<StressLayer>> = if parallel {
-            depths.par_iter().map_init(|| self.make_scratch(), |s, &z| one(z, s)).collect()
+            depths
+                .par_iter()
+                .map_init(|| (self.make_scratch(), fresh()), |w, &z| one(z, w))
+                .collect()
         } else {
-            depths.iter().map(|&z| one(z, &mut s)).collect()
+            let mut w = (s, fresh());
+            depths.iter().map(|&z| one(z, &mut w)).collect()
         };
         Ok(StressField { lattice: self.lattice, layers: layers? })
     }
