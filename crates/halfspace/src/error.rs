@@ -36,6 +36,14 @@ pub enum Error {
     /// Both bodies are rigid, so no contact compliance exists.
     #[error("both bodies are rigid: the composite modulus is infinite")]
     BothRigid,
+    /// A quadrature-based reference did not reach its tolerance.
+    #[error("{what}: quadrature failed: {message}")]
+    Quadrature {
+        /// Which quantity was being integrated.
+        what: &'static str,
+        /// The integrator's report.
+        message: String,
+    },
 }
 
 /// Returns `Err(OutOfDomain)` unless `value` is finite and strictly positive.

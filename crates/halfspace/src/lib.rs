@@ -10,6 +10,9 @@
 //!   displacement and stress fields (Johnson ch. 3; FORMULAS.md F).
 //! - [`rectangle`]: surface displacement produced by a uniform traction on a rectangle, the
 //!   influence coefficients of the traction solvers (Love 1929; FORMULAS.md F).
+//! - [`rect_stress`]: the exact subsurface stress tensor below a rectangle carrying a uniform
+//!   pressure and uniform shears (Love 1929 for the pressure; Cerruti integrated in closed
+//!   form for the shears), the influence coefficients of subsurface stress fields.
 //! - [`hertz`]: Hertz contact of cylinders, spheres and general (elliptic) contacts
 //!   (Johnson ch. 4; FORMULAS.md B and E).
 //! - [`mcewen`]: the subsurface field under a Hertz pressure with proportional shear
@@ -41,6 +44,7 @@ pub mod hertz;
 pub mod material;
 pub mod mcewen;
 pub mod point_load;
+pub mod rect_stress;
 pub mod rectangle;
 
 pub use error::Error;

@@ -17,6 +17,7 @@ pub mod closed;
 pub mod contract;
 pub mod error;
 pub mod fast;
+pub mod field;
 pub mod grid;
 pub mod influence;
 pub mod lp;

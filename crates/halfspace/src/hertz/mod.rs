@@ -7,6 +7,7 @@
 //! and E (sphere). Loads are positive, pressures positive in compression.
 
 mod ellipse;
+pub mod sphere_field;
 pub mod strip;
 
 pub use ellipse::HertzEllipse;

@@ -29,6 +29,24 @@ pub mod tol {
     /// Quadrature-based equilibrium and reciprocity checks: the (nested) integrators are asked
     /// for 1e-11 relative, so 1e-10 leaves room for the accumulated estimate.
     pub const QUAD: f64 = 1e-10;
+    /// Rectangle stresses at depth z = 1e-9 under the interior against the surface traction:
+    /// the field differs from its surface value by O(z / distance to the nearest edge) ~ 2e-8.
+    pub const RECT_SURFACE_LIMIT: f64 = 1e-7;
+    /// Rectangle of side h against the point force of the same resultant at distance d: the
+    /// quadrupole correction is O((h/d)^2) <= 2e-2 times a coefficient below 1/4 here.
+    pub const RECT_POINT_FORCE: f64 = 5e-3;
+    /// Corner sums against the far-field Gauss rule beyond the switch: the corner sums lose
+    /// eps (d/h)^2 ~ 1e-11 at d/h ~ 30.
+    pub const RECT_CORNER_VS_FAR: f64 = 1e-9;
+    /// Hertz sphere field against nested quadrature asked for 1e-12 relative: 1e-9 of p0
+    /// leaves room for the accumulated estimate of the 2D rule.
+    pub const HERTZ_FIELD_QUAD: f64 = 1e-9;
+    /// Hertz sphere off-axis formula 1e-3 a from the axis against the axis closed form: the
+    /// field changes by O(r^2/a^2) = 1e-6 there, and the cancellation costs eps a^2/r^2.
+    pub const HERTZ_NEAR_AXIS: f64 = 1e-5;
+    /// Sliding sphere 1e-6 a below the surface inside the contact: the field differs from the
+    /// surface traction by O(z/a) times gradients of order 1, plus the quadrature's 1e-10.
+    pub const SLIDING_SURFACE: f64 = 1e-5;
 }
 
 /// Parse a CSV table: skip `#` comments and the header line, return rows of f64.
