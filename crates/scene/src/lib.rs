@@ -39,8 +39,9 @@ pub mod units;
 
 pub use error::{ErrorKind, SceneError};
 pub use exec::outcome::{
-    ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, GridZones, Outcome, Progress,
-    RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
+    ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax, FieldOut,
+    FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions, SolverOut,
+    SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
 };
 pub use output::{write_outputs, write_outputs_with, WriteOptions, Written};
 pub use overview::scenes_page;

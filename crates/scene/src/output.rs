@@ -83,8 +83,9 @@ fn refuse(dir: &Path, what: impl std::fmt::Display, hint: impl Into<String>) -> 
 ///
 /// # Errors
 /// A [`SceneError`] (kind [`ErrorKind::Io`]) if a plot cannot be drawn.
-pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, String)>, SceneError> {
-    let mut files = vec![("result.json".to_string(), out.to_json() + "\n")];
+pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)>, SceneError> {
+    let mut files: Vec<(String, String)> = vec![("result.json".to_string(), out.to_json() + "\n")];
+    let mut binary: Vec<(String, Vec<u8>)> = Vec::new();
     let mut s = String::new();
     match &out.surface {
         SurfaceOut::Line { x, p, q, ux, uy, .. } if !x.is_empty() => {
@@ -116,7 +117,7 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, String)>
         }
         _ => {}
     }
-    let f = &out.field;
+    let f = out.field.plane();
     if !f.x.is_empty() {
         s.push_str("x_m,y_m,sxx_Pa,syy_Pa,sxy_Pa\n");
         for (j, y) in f.y.iter().enumerate() {
@@ -125,6 +126,50 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, String)>
             }
         }
         files.push(("field.csv".to_string(), std::mem::take(&mut s)));
+    }
+    if let Some(v) = out.field.volume() {
+        s.push_str("x,y,z,sxx,syy,szz,sxy,syz,sxz,von_mises,tresca,max_principal\n");
+        let a = &v.arrays;
+        let (nx, ny) = (v.x.len(), v.y.len());
+        for (k, z) in v.z.iter().enumerate() {
+            for (j, y) in v.y.iter().enumerate() {
+                for (i, x) in v.x.iter().enumerate() {
+                    let m = (k * ny + j) * nx + i;
+                    let _ = writeln!(
+                        s,
+                        "{x},{y},{z},{},{},{},{},{},{},{},{},{}",
+                        a.sxx[m],
+                        a.syy[m],
+                        a.szz[m],
+                        a.sxy[m],
+                        a.syz[m],
+                        a.sxz[m],
+                        a.von_mises[m],
+                        a.tresca[m],
+                        a.max_principal[m]
+                    );
+                }
+            }
+        }
+        files.push(("field.csv".to_string(), std::mem::take(&mut s)));
+        if v.values.is_none() {
+            for (name, data) in [
+                ("sxx", &a.sxx),
+                ("syy", &a.syy),
+                ("szz", &a.szz),
+                ("sxy", &a.sxy),
+                ("syz", &a.syz),
+                ("sxz", &a.sxz),
+                ("von_mises", &a.von_mises),
+                ("tresca", &a.tresca),
+                ("max_principal", &a.max_principal),
+            ] {
+                binary.push((format!("field_{name}.npy"), npy(data, &v.shape)));
+            }
+            for (name, data) in [("x", &v.x), ("y", &v.y), ("z", &v.z)] {
+                binary.push((format!("field_{name}.npy"), npy(data, &[data.len()])));
+            }
+        }
     }
     if let Some(c) = &out.cycle {
         s.push_str("T_N,delta_m\n");
@@ -140,7 +185,34 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, String)>
         })?;
         files.extend(svgs);
     }
-    Ok(files)
+    let mut all: Vec<(String, Vec<u8>)> =
+        files.into_iter().map(|(n, t)| (n, t.into_bytes())).collect();
+    all.extend(binary);
+    Ok(all)
+}
+
+/// A little-endian float64 array in the `.npy` format (version 1.0): the magic string, the
+/// header length, a Python-literal header (`descr`, `fortran_order`, `shape`) padded with
+/// spaces to a multiple of 64 bytes and ending in a newline, then the data in C order.
+pub(crate) fn npy(data: &[f64], shape: &[usize]) -> Vec<u8> {
+    let dims = match shape {
+        [n] => format!("({n},)"),
+        _ => format!("({})", shape.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")),
+    };
+    let mut header = format!("{{'descr': '<f8', 'fortran_order': False, 'shape': {dims}, }}");
+    // magic (6) + version (2) + length (2) + header + '\n', a multiple of 64
+    while (10 + header.len() + 1) % 64 != 0 {
+        header.push(' ');
+    }
+    header.push('\n');
+    let mut out = Vec::with_capacity(10 + header.len() + 8 * data.len());
+    out.extend_from_slice(b"\x93NUMPY\x01\x00");
+    out.extend_from_slice(&(header.len() as u16).to_le_bytes());
+    out.extend_from_slice(header.as_bytes());
+    for v in data {
+        out.extend_from_slice(&v.to_le_bytes());
+    }
+    out
 }
 
 /// Write result.json, the CSV files and (when `plots`) the SVG plots of `out` into `dir`,
@@ -395,7 +467,7 @@ fn foreign_files(dir: &Path) -> Result<Vec<String>, std::io::Error> {
     }
     let ours = |n: &str| {
         matches!(n, "result.json" | "surface.csv" | "field.csv" | "cycle.csv")
-            || (n.ends_with(".svg") && !n.starts_with('.'))
+            || ((n.ends_with(".svg") || n.ends_with(".npy")) && !n.starts_with('.'))
     };
     let json_ok = std::fs::read_to_string(dir.join("result.json"))
         .ok()
@@ -412,7 +484,7 @@ fn foreign_files(dir: &Path) -> Result<Vec<String>, std::io::Error> {
 
 /// Write `files` (name, contents) into `dir` as described in the module documentation.
 pub(crate) fn write_files(
-    files: &[(String, String)],
+    files: &[(String, Vec<u8>)],
     dir: &Path,
     force: bool,
 ) -> Result<Written, SceneError> {
@@ -453,7 +525,7 @@ pub(crate) fn write_files(
     };
     let marker = format!("stickslip {} result\n", env!("CARGO_PKG_VERSION"));
     for (n, text) in
-        files.iter().map(|(n, t)| (n.as_str(), t.as_str())).chain([(MARKER, marker.as_str())])
+        files.iter().map(|(n, t)| (n.as_str(), t.as_slice())).chain([(MARKER, marker.as_bytes())])
     {
         std::fs::write(tmp.join(n), text).map_err(|e| cleanup(io_err(dir, n, e)))?;
     }

@@ -367,7 +367,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
         }
         _ => {}
     }
-    let f = &out.field;
+    let f = out.field.plane();
     if !f.x.is_empty() && !f.y.is_empty() {
         for (name, v) in [("sxx", &f.sxx), ("syy", &f.syy), ("sxy", &f.sxy)] {
             files.push((

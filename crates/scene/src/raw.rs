@@ -104,6 +104,7 @@ pub(crate) struct RawOutputs {
 pub(crate) struct RawField {
     pub x: Spanned<Vec<f64>>,
     pub y: Spanned<Vec<f64>>,
+    pub z: Option<Spanned<Vec<f64>>>,
     pub scale: Option<Spanned<String>>,
 }
 

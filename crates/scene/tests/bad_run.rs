@@ -57,7 +57,7 @@ fn cases() -> Vec<Case> {
         Case { name: "rolling with a rigid indenter", err: parse(&format!("{}[motion]\nkind = \"rolling\"\nspeed = 0.01\n", visco.replace("model = \"same\"", "model = \"rigid\""))), kind: ErrorKind::Unsupported, key: "indenter.model", line: Some(11) },
         Case { name: "moment and tangential load together by the LP", err: parse(&format!("{SPHERE}tangential = \"10 lbf\"\nmoment = 0.1\n[solver]\nmethod = \"lp\"\n")), kind: ErrorKind::Unsupported, key: "load.moment", line: Some(14) },
         Case { name: "moment beyond Lubkin's gross slip", err: parse(&format!("{SPHERE}moment = 1.0\n")), kind: ErrorKind::Impossible, key: "load.moment", line: Some(13) },
-        Case { name: "subsurface field on a 3D contact", err: parse(&format!("{SPHERE}[outputs]\nfield = {{ x = [-1.0, 1.0, 5], y = [0.1, 1.0, 5] }}\n")), kind: ErrorKind::Unsupported, key: "outputs.field", line: Some(14) },
+        Case { name: "3D subsurface field without its depth axis z", err: parse(&format!("{SPHERE}[outputs]\nfield = {{ x = [-1.0, 1.0, 5], y = [0.1, 1.0, 5] }}\n")), kind: ErrorKind::Schema, key: "outputs.field", line: Some(14) },
         Case { name: "loading cycle on a cylinder", err: parse(&format!("{ROLLER}[outputs]\ncycle = {{ amplitude = 0.5 }}\n")), kind: ErrorKind::Unsupported, key: "outputs.cycle", line: Some(13) },
         Case { name: "the fast solver on a 2D contact", err: parse(&format!("{ROLLER}[solver]\nmethod = \"fast\"\n")), kind: ErrorKind::Unsupported, key: "solver.method", line: Some(13) },
         Case { name: "LP on a 2D contact", err: parse(&format!("{ROLLER}[solver]\nmethod = \"lp\"\n")), kind: ErrorKind::Unsupported, key: "solver.method", line: Some(13) },

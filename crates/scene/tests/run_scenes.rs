@@ -152,7 +152,7 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             ));
             assert!(worst < 1e-12, "{worst}");
             // Surface limit of the McEwen field: sigma_yy -> -p at the shallowest row centre.
-            let f = &out.field;
+            let f = out.field.plane();
             assert!(f.syy[0][f.x.len() / 2] < 0.0);
         }
         "seed001_goryacheva_rubber.toml" | "seed001_goryacheva_slow_relaxation.toml" => {
@@ -380,6 +380,30 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             let (_, _, q, _, _) = line(out);
             assert!(q.iter().all(|v| *v == 0.0));
         }
+        "sphere_subsurface_field.toml" => {
+            // On the axis the shear (symmetric in x) adds nothing to sigma_zz, so sigma_zz is
+            // Hertz's -p0 / (1 + z^2/a^2) (Johnson eq. 3.45), up to the lattice's resolution.
+            let v = out.field.volume().expect("a 3D field");
+            let vals = v.values.as_ref().expect("a small box is inline");
+            let (nx, ny) = (v.x.len(), v.y.len());
+            let i0 = nx / 2;
+            assert!(v.x[i0].abs() < 1e-12 * c.a && ny == 1);
+            let worst =
+                v.z.iter()
+                    .enumerate()
+                    .map(|(k, z)| {
+                        (vals.szz[k * nx + i0] + c.p0 / (1.0 + (z / c.a).powi(2))).abs() / c.p0
+                    })
+                    .fold(0.0, f64::max);
+            report.borrow_mut().push(format!(
+                "{name}: sigma_zz on the axis vs Johnson 3.45, worst {worst:.2e} p0"
+            ));
+            assert!(worst < 5e-3, "{worst}");
+            // The tension behind the contact, near the trailing edge x = -a.
+            let t = v.max.max_principal;
+            assert!(t.value > 0.0 && t.x < -0.8 * c.a && t.x > -1.2 * c.a, "{t:?}");
+            assert!(out.audit.passed);
+        }
         other => panic!("no check for scene {other}: add one"),
     }
     report.into_inner()
@@ -424,10 +448,13 @@ fn default_run_is_fast_and_real() {
     let t0 = Instant::now();
     let out = run(&Scene::default_scene(), &RunOptions::default()).unwrap();
     let secs = t0.elapsed().as_secs_f64();
-    println!("default scene: {secs:.3} s, {} field points", out.field.x.len() * out.field.y.len());
+    println!(
+        "default scene: {secs:.3} s, {} field points",
+        out.field.plane().x.len() * out.field.plane().y.len()
+    );
     assert!(secs < 10.0);
-    assert_eq!(out.field.sxx.len(), 40);
-    assert_eq!(out.field.sxx[0].len(), 61);
+    assert_eq!(out.field.plane().sxx.len(), 40);
+    assert_eq!(out.field.plane().sxx[0].len(), 61);
     assert!(rel(out.contact.normal_load, 986.39 * 9.80665) < tol::QUOTED5);
 }
 
@@ -441,7 +468,7 @@ fn switching_an_effect_off_removes_its_evaluations() {
     let s = Scene::from_toml_str(&no_field, None).unwrap();
     let out = run(&s, &RunOptions::default()).unwrap();
     assert_eq!(out.evaluations.subsurface_field, 0);
-    assert!(out.field.x.is_empty());
+    assert!(out.field.plane().x.is_empty());
     let frictionless = no_field.replace("friction = 1.0\nsliding = true\n", "friction = 0.0\n");
     let s = Scene::from_toml_str(&frictionless, None).unwrap();
     let out = run(&s, &RunOptions::default()).unwrap();

@@ -1,16 +1,29 @@
-//! Stage 6, subsurface field of a line contact: the McEwen / Muskhelishvili closed form, or
-//! full integration of the line-load kernels (graded, or Flamant's at k = 0).
+//! Stage 6, subsurface field: of a line contact, the McEwen / Muskhelishvili closed form or
+//! full integration of the line-load kernels (graded, or Flamant's at k = 0); of a 3D
+//! contact, the Hertz sphere's closed form or the lattice traction by FFT per depth layer.
 
 use stickslip_graded::StressField;
 use stickslip_halfspace::mcewen::HertzTraction;
 use stickslip_halfspace::Stress2;
 
+use stickslip_halfspace::hertz::sphere_field::hertz_sphere_stress;
+use stickslip_halfspace::Stress3;
+use stickslip_traction::field::{
+    invariants, subsurface_field, FieldConfig, Lattice as FieldLattice, StressLayer,
+    SurfaceTraction,
+};
+
 use super::friction::LineTraction;
-use super::normal::LineContact;
-use super::outcome::FieldOut;
+use super::lattice::Lattice;
+use super::normal::{ContactSolution, LineContact};
+use super::outcome::{
+    FieldArrays, FieldMax, FieldOut, FieldPeak, VolumeField, INLINE_FIELD_POINTS,
+};
 use super::{linspace, solver_err, Ctx};
 use crate::error::SceneError;
-use crate::plan::recipe::{LineField, LineFieldMethod, LineFriction};
+use crate::plan::recipe::{
+    ContactField, ContactFieldMethod, ContactRecipe, LineField, LineFieldMethod, LineFriction,
+};
 use crate::scene::FieldScale;
 
 /// The stresses on the field grid (empty arrays when not asked for).
@@ -67,4 +80,165 @@ pub(crate) fn line(
         cx.progress("subsurface field", j + 1, ny);
     }
     Ok(out)
+}
+
+// ---------------------------------------------------------------------------------------
+// 3D
+
+/// The stresses of a 3D contact on the box of `f`: the Hertz sphere's closed form, or the
+/// lattice's pressure and traction (on the substrate) by FFT per depth layer
+/// (`stickslip_traction::field`) on a lattice of the contact's cell size extended over the
+/// box, interpolated bilinearly between cell centres to the box points.
+pub(crate) fn contact(
+    f: &ContactField,
+    r: &ContactRecipe,
+    n: &ContactSolution,
+    lat: &Lattice,
+    cx: &mut Ctx<'_>,
+) -> Result<VolumeField, SceneError> {
+    let g = f.grid;
+    let unit = match g.scale {
+        FieldScale::HalfWidth => n.ax,
+        FieldScale::Metres => 1.0,
+    };
+    let zg = g.z.unwrap_or((0.0, 0.0, 1));
+    let xs = linspace(g.x.0 * unit, g.x.1 * unit, g.x.2);
+    let ys = linspace(g.y.0 * unit, g.y.1 * unit, g.y.2);
+    let zs = linspace(zg.0 * unit, zg.1 * unit, zg.2);
+    let (nx, ny, nz) = (xs.len(), ys.len(), zs.len());
+    let total = nx * ny * nz;
+    let mut stresses: Vec<Stress3> = Vec::with_capacity(total);
+    let method = match f.method {
+        ContactFieldMethod::HertzSphere => {
+            for (k, &z) in zs.iter().enumerate() {
+                for &y in &ys {
+                    for &x in &xs {
+                        stresses.push(hertz_sphere_stress(n.ax, n.p0, f.nu, x, y, z));
+                    }
+                }
+                cx.progress("subsurface field", k + 1, nz);
+            }
+            "Hertz sphere field in closed form".to_string()
+        }
+        ContactFieldMethod::Lattice => {
+            let (fl, p, qx, qy) = extended_lattice(lat, &xs, &ys)?;
+            let t = SurfaceTraction { p: &p, qx: &qx, qy: &qy };
+            cx.progress("subsurface field", 0, nz);
+            let field = subsurface_field(fl, f.nu, &t, &zs, FieldConfig::default())
+                .map_err(|e| solver_err("subsurface field", e))?;
+            cx.progress("subsurface field", nz, nz);
+            for layer in &field.layers {
+                for &y in &ys {
+                    for &x in &xs {
+                        stresses.push(interpolate(&fl, layer, x, y));
+                    }
+                }
+            }
+            format!(
+                "lattice of {} x {} cells of {:.3e} x {:.3e} m (the contact's), FFT per depth layer, bilinear between cell centres",
+                fl.nx, fl.ny, fl.hx, fl.hy
+            )
+        }
+    };
+    let _ = r;
+    cx.ev.subsurface_field += total as u64;
+    let mut a = FieldArrays::default();
+    let mut peaks: [Option<FieldPeak>; 3] = [None; 3];
+    for (idx, s) in stresses.iter().enumerate() {
+        let inv = invariants(s);
+        a.sxx.push(s.xx);
+        a.syy.push(s.yy);
+        a.szz.push(s.zz);
+        a.sxy.push(s.xy);
+        a.syz.push(s.yz);
+        a.sxz.push(s.xz);
+        a.von_mises.push(inv.von_mises);
+        a.tresca.push(inv.tresca);
+        a.max_principal.push(inv.principal[0].max(inv.principal[1]).max(inv.principal[2]));
+        let (i, j, k) = (idx % nx, (idx / nx) % ny, idx / (nx * ny));
+        let at = |value: f64| FieldPeak { value, x: xs[i], y: ys[j], z: zs[k] };
+        let vals = [inv.von_mises, inv.tresca, *a.max_principal.last().unwrap_or(&f64::NAN)];
+        for (peak, v) in peaks.iter_mut().zip(vals) {
+            if peak.is_none_or(|p| v > p.value) {
+                *peak = Some(at(v));
+            }
+        }
+    }
+    let none = FieldPeak { value: f64::NAN, x: f64::NAN, y: f64::NAN, z: f64::NAN };
+    let max = FieldMax {
+        von_mises: peaks[0].unwrap_or(none),
+        tresca: peaks[1].unwrap_or(none),
+        max_principal: peaks[2].unwrap_or(none),
+    };
+    Ok(VolumeField {
+        x: xs,
+        y: ys,
+        z: zs,
+        shape: [nz, ny, nx],
+        method,
+        max,
+        values: (total <= INLINE_FIELD_POINTS).then(|| a.clone()),
+        arrays: a,
+    })
+}
+
+/// The contact lattice extended with unloaded cells of the same size so that every box
+/// point lies between cell centres; p, qx, qy per cell (index `j * nx + i`).
+#[allow(clippy::type_complexity)]
+fn extended_lattice(
+    lat: &Lattice,
+    xs: &[f64],
+    ys: &[f64],
+) -> Result<(FieldLattice, Vec<f64>, Vec<f64>, Vec<f64>), SceneError> {
+    let step = |v: &[f64]| if v.len() > 1 { v[1] - v[0] } else { 0.0 };
+    let (hx, hy) = (step(&lat.x), step(&lat.y));
+    if !(hx > 0.0 && hy > 0.0) {
+        return Err(solver_err("subsurface field", "the contact lattice has a single cell"));
+    }
+    let lo = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = |v: &[f64]| v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    // cells added before the first contact cell and after the last, one beyond the box
+    let before = |c0: f64, b0: f64, h: f64| (((c0 - b0) / h).ceil().max(0.0) as usize) + 1;
+    let after = |c1: f64, b1: f64, h: f64| (((b1 - c1) / h).ceil().max(0.0) as usize) + 1;
+    let (bx, ax_) = (before(lat.x[0], lo(xs), hx), after(hi(&lat.x), hi(xs), hx));
+    let (by, ay_) = (before(lat.y[0], lo(ys), hy), after(hi(&lat.y), hi(ys), hy));
+    let (nx, ny) = (lat.x.len() + bx + ax_, lat.y.len() + by + ay_);
+    let x0 = lat.x[0] - bx as f64 * hx;
+    let y0 = lat.y[0] - by as f64 * hy;
+    let fl = FieldLattice::new(nx, ny, hx, hy, x0, y0)
+        .map_err(|e| solver_err("subsurface field lattice", e))?;
+    let (mut p, mut qx, mut qy) = (vec![0.0; nx * ny], vec![0.0; nx * ny], vec![0.0; nx * ny]);
+    for i in 0..lat.x.len() {
+        for j in 0..lat.y.len() {
+            if lat.stick[i][j] >= 0 {
+                let k = (j + by) * nx + (i + bx);
+                p[k] = lat.p[i][j];
+                qx[k] = lat.qx[i][j];
+                qy[k] = lat.qy[i][j];
+            }
+        }
+    }
+    Ok((fl, p, qx, qy))
+}
+
+/// The stress at (x, y) of `layer`, bilinear between the four surrounding cell centres.
+fn interpolate(fl: &FieldLattice, layer: &StressLayer, x: f64, y: f64) -> Stress3 {
+    let u = ((x - fl.x0) / fl.hx).clamp(0.0, (fl.nx - 1) as f64);
+    let v = ((y - fl.y0) / fl.hy).clamp(0.0, (fl.ny - 1) as f64);
+    let (i0, j0) = ((u.floor() as usize).min(fl.nx - 2), (v.floor() as usize).min(fl.ny - 2));
+    let (s, t) = (u - i0 as f64, v - j0 as f64);
+    let w = [(1.0 - s) * (1.0 - t), s * (1.0 - t), (1.0 - s) * t, s * t];
+    let ks =
+        [j0 * fl.nx + i0, j0 * fl.nx + i0 + 1, (j0 + 1) * fl.nx + i0, (j0 + 1) * fl.nx + i0 + 1];
+    let mut out = Stress3::default();
+    for (wk, &k) in w.iter().zip(&ks) {
+        let c = layer.stress(k);
+        out.xx += wk * c.xx;
+        out.yy += wk * c.yy;
+        out.zz += wk * c.zz;
+        out.xy += wk * c.xy;
+        out.xz += wk * c.xz;
+        out.yz += wk * c.yz;
+    }
+    out
 }

@@ -36,7 +36,7 @@ use std::time::Instant;
 use crate::error::{ErrorKind, SceneError};
 use crate::plan::{Plan, Recipe};
 use outcome::{
-    ContactOut, CycleOut, EffectsOut, Evaluations, FieldOut, Forces, Outcome, Progress, RigidOut,
+    ContactOut, CycleOut, EffectsOut, Evaluations, Field, Forces, Outcome, Progress, RigidOut,
     RollingOut, RunOptions, SolverOut, SurfaceOut, Zones,
 };
 
@@ -78,7 +78,7 @@ pub(crate) struct Parts {
     pub forces: Forces,
     pub rigid: RigidOut,
     pub surface: SurfaceOut,
-    pub field: FieldOut,
+    pub field: Field,
     pub rolling: Option<RollingOut>,
     pub cycle: Option<CycleOut>,
 }
@@ -241,7 +241,7 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
         },
         rigid: RigidOut { tangential: rigid, rotation: None, per_body: None },
         surface,
-        field,
+        field: Field::Plane(field),
         rolling: None,
         cycle: None,
     })
@@ -270,6 +270,10 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         Some(c) => Some(cycle::run(c, r, &n, cx)?),
         None => None,
     };
+    let field = match &r.field {
+        Some(f) => Field::Volume(Box::new(field::contact(f, r, &n, &lat, cx)?)),
+        None => Field::default(),
+    };
     Ok(Parts {
         contact: ContactOut {
             a: n.ax,
@@ -291,7 +295,7 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         } else {
             lattice::Lattice::empty().into_surface()
         },
-        field: FieldOut::default(),
+        field,
         rolling: None,
         cycle,
     })

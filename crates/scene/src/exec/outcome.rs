@@ -198,7 +198,120 @@ pub enum SurfaceOut {
     },
 }
 
-/// `field` in result.json: `sxx[j][i]` at (`x[i]`, depth `y[j]`), compressive negative.
+/// `field` in result.json: the plane field of a line contact, or the volume field of a 3D
+/// contact.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Field {
+    /// 2D: stresses on an x-depth grid (empty arrays when not asked).
+    Plane(FieldOut),
+    /// 3D: stresses on a box of points.
+    Volume(Box<VolumeField>),
+}
+
+static NO_PLANE: FieldOut =
+    FieldOut { x: Vec::new(), y: Vec::new(), sxx: Vec::new(), syy: Vec::new(), sxy: Vec::new() };
+
+impl Default for Field {
+    fn default() -> Self {
+        Field::Plane(FieldOut::default())
+    }
+}
+
+impl Field {
+    /// The plane field (empty for a volume field).
+    pub fn plane(&self) -> &FieldOut {
+        match self {
+            Field::Plane(f) => f,
+            Field::Volume(_) => &NO_PLANE,
+        }
+    }
+
+    /// The volume field, if any.
+    pub fn volume(&self) -> Option<&VolumeField> {
+        match self {
+            Field::Plane(_) => None,
+            Field::Volume(v) => Some(v),
+        }
+    }
+}
+
+/// The stresses of a 3D field, each a flat array over the box, index
+/// `k * ny * nx + j * nx + i` at (`x[i]`, `y[j]`, depth `z[k]`); SI, compressive negative.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct FieldArrays {
+    /// sigma_xx.
+    pub sxx: Vec<f64>,
+    /// sigma_yy.
+    pub syy: Vec<f64>,
+    /// sigma_zz.
+    pub szz: Vec<f64>,
+    /// sigma_xy.
+    pub sxy: Vec<f64>,
+    /// sigma_yz.
+    pub syz: Vec<f64>,
+    /// sigma_xz.
+    pub sxz: Vec<f64>,
+    /// von Mises equivalent stress.
+    pub von_mises: Vec<f64>,
+    /// Tresca: the largest shear stress (sigma_1 - sigma_3)/2.
+    pub tresca: Vec<f64>,
+    /// The largest principal stress (tension positive).
+    pub max_principal: Vec<f64>,
+}
+
+/// Where a field quantity is largest.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FieldPeak {
+    /// The value (Pa).
+    pub value: f64,
+    /// x (m).
+    pub x: f64,
+    /// y (m).
+    pub y: f64,
+    /// Depth z (m).
+    pub z: f64,
+}
+
+/// The maxima of a 3D field over the box.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FieldMax {
+    /// Largest von Mises stress: where yield starts.
+    pub von_mises: FieldPeak,
+    /// Largest shear stress (Tresca).
+    pub tresca: FieldPeak,
+    /// Largest principal stress: the tensile peak where cracks start.
+    pub max_principal: FieldPeak,
+}
+
+/// `field` of a 3D contact: the box, the maxima, and the arrays (in result.json only when
+/// the box is small; always in field.csv and, for large boxes, in `field_*.npy`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct VolumeField {
+    /// x of the box (m).
+    pub x: Vec<f64>,
+    /// y of the box (m).
+    pub y: Vec<f64>,
+    /// Depths (m).
+    pub z: Vec<f64>,
+    /// `[nz, ny, nx]`.
+    pub shape: [usize; 3],
+    /// How the stresses were computed.
+    pub method: String,
+    /// The maxima.
+    pub max: FieldMax,
+    /// The arrays, inline when the box has at most [`INLINE_FIELD_POINTS`] points.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub values: Option<FieldArrays>,
+    /// The arrays (always; written to field.csv and the .npy files).
+    #[serde(skip)]
+    pub arrays: FieldArrays,
+}
+
+/// Boxes up to this many points carry their arrays in result.json too.
+pub const INLINE_FIELD_POINTS: usize = 20_000;
+
+/// `field` of a line contact: `sxx[j][i]` at (`x[i]`, depth `y[j]`), compressive negative.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct FieldOut {
     /// x (m).
@@ -318,7 +431,7 @@ pub struct Outcome {
     /// Surface arrays.
     pub surface: SurfaceOut,
     /// Subsurface stresses (empty arrays when off).
-    pub field: FieldOut,
+    pub field: Field,
     /// Solver information.
     pub solver: SolverOut,
     /// Rolling results, when rolling.

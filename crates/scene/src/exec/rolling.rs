@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 
 use stickslip_rolling::Regime as RollRegime;
 
-use super::outcome::{ContactOut, FieldOut, Forces, RigidOut, RollingOut, SurfaceOut, Zones};
+use super::outcome::{ContactOut, Field, Forces, RigidOut, RollingOut, SurfaceOut, Zones};
 use super::{linspace, solver_err, Ctx, Parts};
 use crate::error::SceneError;
 use crate::plan::recipe::{RollingModel, RollingRecipe};
@@ -126,7 +126,7 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
             uy: vec![],
             datum: "not computed for rolling".to_string(),
         },
-        field: FieldOut::default(),
+        field: Field::default(),
         rolling: Some(RollingOut {
             l,
             d: 0.5 * (front - rear),

@@ -14,14 +14,15 @@ use stickslip_traction::{FastConfig, ModifiedLp};
 use super::checks::{self, invalid, tolerance_for};
 use super::cost::{self, lattice_elements};
 use super::recipe::{
-    ContactNormal, ContactRecipe, CycleRecipe, Force, GridMethod, GridStep, LineDisplacements,
-    LineField, LineFieldMethod, LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface,
-    Recipe, RollingModel, RollingRecipe, Tangential,
+    ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, CycleRecipe, Force, GridMethod,
+    GridStep, LineDisplacements, LineField, LineFieldMethod, LineFriction, LineLoad, LineNormal,
+    LineRecipe, LineSurface, Recipe, RollingModel, RollingRecipe, Tangential,
 };
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
 use crate::error::ErrorKind;
 use crate::scene::{
-    Elastic, Ellipse, Geometry, Indenter, Method, Motion, NormalLoad, Patch, Scene, Substrate,
+    Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Method, Motion, NormalLoad, Patch,
+    Scene, Substrate,
 };
 
 /// Plan `scene`: refuse what no solver handles, choose the method of every stage, explain
@@ -407,9 +408,25 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     } else {
         None
     };
-    let lattice_output = scene.outputs.surface || matches!(tangential, Some(Tangential::Grid(_)));
+    let lattice_output = scene.outputs.surface
+        || matches!(tangential, Some(Tangential::Grid(_)))
+        || scene.outputs.field.is_some();
     let cycle =
         scene.outputs.cycle.map(|c| CycleRecipe { amplitude: c.amplitude, points: c.points });
+    let field = match scene.outputs.field {
+        Some(grid) => {
+            let frictionless = tangential.is_none();
+            let method = match (&normal, frictionless) {
+                (ContactNormal::Sphere { .. }, true) if scene.solver.method != Method::Fast => {
+                    ContactFieldMethod::HertzSphere
+                }
+                _ => ContactFieldMethod::Lattice,
+            };
+            field_box(scene, &normal, grid)?;
+            Some(ContactField { grid, method, nu: sub.poisson_ratio() })
+        }
+        None => None,
+    };
     Ok((
         ContactRecipe {
             normal,
@@ -420,9 +437,64 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             tangential,
             cycle,
             lattice_output,
+            field,
         },
         grid_reason,
     ))
+}
+
+/// How far from the contact a field box may reach, in contact semi-axes.
+pub const MAX_FIELD_REACH: f64 = 10.0;
+
+/// A 3D field box must stay within [`MAX_FIELD_REACH`] contact semi-axes of the contact
+/// (in plane and in depth): beyond, the stresses are the far field of a point load and a
+/// lattice over the box would be mostly empty.
+fn field_box(scene: &Scene, normal: &ContactNormal, grid: FieldGrid) -> Result<(), Issue> {
+    let sub = substrate_material(&scene.substrate)?;
+    let ind = indenter_material(scene, &sub)?;
+    let e_star = composite_modulus(&sub, &ind);
+    let (ax, ay) = match normal {
+        ContactNormal::Sphere { radius, force, e_star } => {
+            let a = HertzSphere::new(*force, *radius, *e_star)
+                .map_err(|e| invalid("load.normal", e))?
+                .contact_radius();
+            (a, a)
+        }
+        ContactNormal::Ellipse { rx, ry, force, .. } => {
+            let h = stickslip_halfspace::hertz::HertzEllipse::new(*rx, *ry, *force, e_star)
+                .map_err(|e| invalid("load.normal", e))?;
+            (h.semi_axis_x(), h.semi_axis_y())
+        }
+        ContactNormal::EllipseGiven { a, b, .. } => (*a, *b),
+        ContactNormal::Patches(ps) => {
+            let (lo, hi) = crate::scene::patch_bounds(ps);
+            (0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]))
+        }
+    };
+    let unit = match grid.scale {
+        FieldScale::HalfWidth => ax,
+        FieldScale::Metres => 1.0,
+    };
+    let reach = MAX_FIELD_REACH * ax.max(ay);
+    let far = |v: f64| (v * unit).abs() > reach;
+    let z = grid.z.unwrap_or((0.0, 0.0, 1));
+    for (key, (lo, hi, _)) in
+        [("outputs.field.x", grid.x), ("outputs.field.y", grid.y), ("outputs.field.z", z)]
+    {
+        if far(lo) || far(hi) {
+            return Err(checks::issue(
+                ErrorKind::OutOfRange,
+                key,
+                format!(
+                    "the box reaches {:.3e} m from the contact centre; the contact's largest semi-axis is {:.3e} m",
+                    (lo * unit).abs().max((hi * unit).abs()),
+                    ax.max(ay)
+                ),
+                format!("keep the box within {MAX_FIELD_REACH} semi-axes of the contact (scale = \"a\" measures in the semi-axis a along x)"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 // ---------------------------------------------------------------------------------------
@@ -591,6 +663,19 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
     }
 
     match recipe {
+        Recipe::Contact(ContactRecipe { field: Some(field), .. }) => effects.push(on(
+            E::SubsurfaceField,
+            format!(
+                "outputs.field with {} x {} x {} points",
+                field.grid.x.2,
+                field.grid.y.2,
+                field.grid.z.map_or(1, |z| z.2)
+            ),
+            match field.method {
+                ContactFieldMethod::HertzSphere => Technique::HertzSphereField,
+                ContactFieldMethod::Lattice => Technique::LatticeField,
+            },
+        )),
         Recipe::Line(LineRecipe { field: Some(field), .. }) => effects.push(on(
             E::SubsurfaceField,
             format!("outputs.field with {} x {} points", field.grid.x.2, field.grid.y.2),

@@ -381,13 +381,6 @@ pub(crate) fn refuse(scene: &Scene) -> Result<(), Issue> {
             ));
         }
     } else {
-        if scene.outputs.field.is_some() {
-            return Err(unsupported(
-                "outputs.field",
-                "subsurface fields are computed for 2D contacts (cylinder, punch) in this version",
-                "remove outputs.field, or use a cylinder",
-            ));
-        }
         if l.tangential != 0.0
             && l.moment != 0.0
             && matches!(method, Method::Lp | Method::ClosedForm)

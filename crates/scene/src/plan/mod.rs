@@ -155,11 +155,17 @@ pub enum Technique {
     /// Full integration of the line-load field (FORMULAS.md A2; Flamant at $k = 0$):
     /// `stickslip_graded::StressField`.
     StressQuadrature,
+    /// The Hertz sphere's subsurface field in closed form (Huber; Hamilton 1983):
+    /// `stickslip_halfspace::hertz::sphere_field`.
+    HertzSphereField,
+    /// Subsurface stresses of a lattice traction by FFT per depth layer with the exact
+    /// uniform-rectangle stresses (FORMULAS.md F): `stickslip_traction::field`.
+    LatticeField,
 }
 
 impl Technique {
     /// Every technique, in the order of declaration.
-    pub const ALL: [Technique; 22] = [
+    pub const ALL: [Technique; 24] = [
         Technique::HertzLine,
         Technique::GradedCylinder,
         Technique::FlatPunch,
@@ -182,6 +188,8 @@ impl Technique {
         Technique::Deresiewicz,
         Technique::McEwen,
         Technique::StressQuadrature,
+        Technique::HertzSphereField,
+        Technique::LatticeField,
     ];
 
     /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
@@ -210,6 +218,8 @@ impl Technique {
             Technique::Deresiewicz => 19,
             Technique::McEwen => 20,
             Technique::StressQuadrature => 21,
+            Technique::HertzSphereField => 22,
+            Technique::LatticeField => 23,
         }
     }
 
@@ -224,6 +234,7 @@ impl Technique {
                 | Technique::Goryacheva
                 | Technique::GradedKernels
                 | Technique::StressQuadrature
+                | Technique::LatticeField
         )
     }
 
@@ -265,6 +276,12 @@ impl Technique {
             Technique::McEwen => "McEwen / Muskhelishvili closed form (FORMULAS.md C)",
             Technique::StressQuadrature => {
                 "full integration of the line-load field (FORMULAS.md A2), numerical"
+            }
+            Technique::HertzSphereField => {
+                "Hertz sphere subsurface field in closed form (Huber; Hamilton 1983)"
+            }
+            Technique::LatticeField => {
+                "lattice traction by FFT per depth layer with exact rectangle stresses (FORMULAS.md F), interpolated to the box, numerical"
             }
         }
     }

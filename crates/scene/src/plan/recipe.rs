@@ -213,6 +213,29 @@ pub struct ContactRecipe {
     pub cycle: Option<CycleRecipe>,
     /// Whether the lattice arrays go into the result.
     pub lattice_output: bool,
+    /// Subsurface stresses on a box of points, when asked.
+    pub field: Option<ContactField>,
+}
+
+/// Subsurface stresses of a 3D contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactField {
+    /// The box, in units of the grid's scale (the contact semi-axis a along x, or metres).
+    pub grid: FieldGrid,
+    /// How the stresses are computed.
+    pub method: ContactFieldMethod,
+    /// Poisson's ratio of the substrate.
+    pub nu: f64,
+}
+
+/// How the stresses of a 3D contact are computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ContactFieldMethod {
+    /// The Hertz sphere's closed-form field (frictionless normal contact).
+    HertzSphere,
+    /// The lattice's pressure and tractions by FFT convolution per depth layer with the exact
+    /// stresses of uniformly loaded rectangles, interpolated bilinearly to the box.
+    Lattice,
 }
 
 /// The normal contact of a 3D scene.

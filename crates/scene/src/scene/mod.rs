@@ -258,13 +258,17 @@ pub enum Motion {
     },
 }
 
-/// A subsurface grid, in units of `scale`.
+/// A subsurface grid, in units of `scale`: in 2D x and depth y; in 3D a box of x, y and
+/// depth z.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FieldGrid {
     /// x from, to, count.
     pub x: (f64, f64, usize),
-    /// depth y from, to, count (y > 0).
+    /// 2D: depth y from, to, count (y > 0); 3D: y from, to, count (count 1 with from = to
+    /// for a single section).
     pub y: (f64, f64, usize),
+    /// 3D only: depth z from, to, count (z > 0).
+    pub z: Option<(f64, f64, usize)>,
     /// Unit of x and y.
     pub scale: FieldScale,
 }

@@ -444,9 +444,14 @@ fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Output
                     _ => FieldScale::Metres,
                 },
             };
+            let z = match &fr.z {
+                Some(z) => Some(axis(z, "outputs.field.z")?),
+                None => None,
+            };
             Some(FieldGrid {
                 x: axis(&fr.x, "outputs.field.x")?,
                 y: axis(&fr.y, "outputs.field.y")?,
+                z,
                 scale,
             })
         }

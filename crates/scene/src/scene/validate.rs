@@ -20,7 +20,7 @@ pub(crate) fn validate(scene: &Scene) -> Result<(), Issue> {
     indenter(&scene.indenter)?;
     load(scene)?;
     motion(scene)?;
-    outputs(&scene.outputs)?;
+    outputs(&scene.outputs, scene.geometry.is_2d())?;
     solver(&scene.solver)
 }
 
@@ -318,10 +318,55 @@ fn axis(key: &str, a: (f64, f64, usize), depth: bool) -> Result<(), Issue> {
     Ok(())
 }
 
-fn outputs(o: &Outputs) -> Result<(), Issue> {
-    if let Some(FieldGrid { x, y, .. }) = o.field {
-        axis("outputs.field.x", x, false)?;
-        axis("outputs.field.y", y, true)?;
+/// An axis of a 3D box: `from <= to`, at least one point, one point when `from == to`.
+fn box_axis(key: &str, a: (f64, f64, usize), depth: bool) -> Result<(), Issue> {
+    let bad = |m: String| {
+        Issue::new(ErrorKind::OutOfRange, key, m).hint(
+            "[from, to, count] with from <= to and 1 <= count <= 10000 (one point when from = to; depths > 0)",
+        )
+    };
+    let (lo, hi, n) = a;
+    if !(lo.is_finite() && hi.is_finite() && lo <= hi) {
+        return Err(bad(format!("need from <= to, got {lo} .. {hi}")));
+    }
+    if depth && lo <= 0.0 {
+        return Err(bad(format!("depths must be below the surface (> 0), got {lo}")));
+    }
+    if !(1..=MAX_FIELD_POINTS).contains(&n) || (lo < hi && n < 2) {
+        return Err(bad(format!("count {n} is not allowed for {lo} .. {hi}")));
+    }
+    Ok(())
+}
+
+fn outputs(o: &Outputs, two_d: bool) -> Result<(), Issue> {
+    if let Some(FieldGrid { x, y, z, .. }) = o.field {
+        match (two_d, z) {
+            (true, None) => {
+                axis("outputs.field.x", x, false)?;
+                axis("outputs.field.y", y, true)?;
+            }
+            (true, Some(_)) => {
+                return Err(Issue::new(
+                    ErrorKind::Schema,
+                    "outputs.field.z",
+                    "z is the depth axis of a 3D contact; in 2D the depth is y",
+                )
+                .hint("remove z; give y = [from, to, count] as the depth"))
+            }
+            (false, Some(z)) => {
+                box_axis("outputs.field.x", x, false)?;
+                box_axis("outputs.field.y", y, false)?;
+                box_axis("outputs.field.z", z, true)?;
+            }
+            (false, None) => {
+                return Err(Issue::new(
+                    ErrorKind::Schema,
+                    "outputs.field",
+                    "a 3D field needs the depth axis z",
+                )
+                .hint("field = { x = [-1.5, 1.5, 61], y = [0, 0, 1], z = [0.02, 2.0, 40], scale = \"a\" }"))
+            }
+        }
     }
     if let Some(Cycle { amplitude, points }) = o.cycle {
         if !(amplitude > 0.0 && amplitude <= 1.0) {

@@ -127,6 +127,7 @@ static FIELD: Table = Table {
     fields: &[
         req("x", Kind::NumArray("[-2.0, 2.0, 41]")),
         req("y", Kind::NumArray("[0.01, 3.0, 31]")),
+        f("z", Kind::NumArray("[0.02, 2.0, 40]")),
         f("scale", Kind::Str(&["a", "m"])),
     ],
 };

@@ -1,0 +1,123 @@
+//! 3D subsurface fields from scenes: `[outputs] field = { x, y, z, scale }` on a box of
+//! points, by the Hertz sphere's closed form or by FFT of the lattice traction, checked
+//! against closed forms; refusals for boxes that make no sense; field.csv columns and the
+//! .npy arrays of large boxes.
+
+use stickslip_scene::{run, write_outputs, ErrorKind, Outcome, RunOptions, Scene};
+
+const SPHERE: &str = "[geometry]\nkind = \"sphere\"\nradius = \"10 mm\"\n[substrate]\nmodel = \"homogeneous\"\ne = \"210 GPa\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nnormal = \"100 N\"\nLOAD\n[outputs]\nfield = FIELD\n[solver]\nSOLVER\n";
+
+#[allow(clippy::result_large_err)]
+fn go(load: &str, field: &str, solver: &str) -> Result<Outcome, stickslip_scene::SceneError> {
+    let src = SPHERE.replace("LOAD", load).replace("FIELD", field).replace("SOLVER", solver);
+    run(&Scene::from_toml_str(&src, Some("f.toml".into()))?, &RunOptions::default())
+}
+
+const AXIS: &str = "{ x = [0, 0, 1], y = [0, 0, 1], z = [0.05, 3.0, 60], scale = \"a\" }";
+
+/// sigma_z on the axis of a Hertz sphere, -p0 / (1 + z^2/a^2) (Johnson eq. 3.45).
+fn axis_error(out: &Outcome) -> f64 {
+    let v = out.field.volume().expect("a volume field");
+    let vals = v.values.as_ref().unwrap();
+    let (a, p0) = (out.contact.a, out.contact.p0);
+    v.z.iter()
+        .zip(&vals.szz)
+        .map(|(z, s)| (s + p0 / (1.0 + (z / a).powi(2))).abs() / p0)
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn the_closed_form_and_the_lattice_agree_with_johnson_on_the_axis() {
+    let closed = go("", AXIS, "grid = 32").unwrap();
+    assert!(closed.field.volume().unwrap().method.contains("closed form"));
+    assert!(axis_error(&closed) < 1e-12, "{}", axis_error(&closed));
+    // The lattice (the fast solver's path) at 128 cells across: within 0.5 % of p0.
+    let lattice = go("", AXIS, "grid = 128\nmethod = \"fast\"").unwrap();
+    assert!(lattice.field.volume().unwrap().method.contains("lattice"));
+    let err = axis_error(&lattice);
+    assert!(err < 5e-3, "lattice on the axis: {err}");
+    println!(
+        "Hertz sphere, sigma_z on the axis: closed form exact, lattice (128 across) {err:.2e} p0"
+    );
+}
+
+#[test]
+fn the_maximum_shear_is_031_p0_at_048_a() {
+    let out =
+        go("", "{ x = [0, 0, 1], y = [0, 0, 1], z = [0.3, 0.7, 41], scale = \"a\" }", "grid = 32")
+            .unwrap();
+    let m = out.field.volume().unwrap().max.tresca;
+    let (a, p0) = (out.contact.a, out.contact.p0);
+    assert!((m.value / p0 - 0.31).abs() < 0.005, "{}", m.value / p0);
+    assert!((m.z / a - 0.48).abs() < 0.011, "{}", m.z / a);
+}
+
+#[test]
+fn sliding_puts_the_tensile_peak_at_the_trailing_edge() {
+    // Mindlin under T = 0.5 f P along +x: the traction on the substrate drags it along +x,
+    // so the surface tension peaks behind the contact (x < 0), near x = -a.
+    let out = go(
+        "tangential = \"10 N\"\nfriction = 0.2",
+        "{ x = [-1.5, 1.5, 61], y = [0, 0, 1], z = [0.02, 1.0, 10], scale = \"a\" }",
+        "grid = 64",
+    )
+    .unwrap();
+    let m = out.field.volume().unwrap().max.max_principal;
+    let a = out.contact.a;
+    assert!(m.value > 0.0, "{m:?}");
+    assert!(m.x < -0.8 * a && m.x > -1.2 * a, "peak at x/a = {}", m.x / a);
+    assert!(out.audit.passed);
+}
+
+#[test]
+fn boxes_that_make_no_sense_are_refused_with_their_key() {
+    let cases = [
+        ("{ x = [-1, 1, 11], y = [0, 0, 1], z = [0.0, 1.0, 5] }", "outputs.field.z"),
+        ("{ x = [-1, 1, 11], y = [0, 0, 1], z = [-0.5, 1.0, 5] }", "outputs.field.z"),
+        ("{ x = [-1, 1, 11], y = [0, 0, 1] }", "outputs.field"),
+        ("{ x = [-50, 1, 11], y = [0, 0, 1], z = [0.1, 1.0, 5] }", "outputs.field.x"),
+        ("{ x = [-1, 1, 11], y = [0, 0, 1], z = [0.1, 40.0, 5] }", "outputs.field.z"),
+        ("{ x = [1, -1, 11], y = [0, 0, 1], z = [0.1, 1.0, 5] }", "outputs.field.x"),
+    ];
+    for (field, key) in cases {
+        let e = go("", field, "grid = 16").unwrap_err();
+        assert_eq!(e.key.as_deref(), Some(key), "{field}: {e}");
+        assert!(e.position.is_some() && e.hint.is_some(), "{field}: {e}");
+        assert!(matches!(e.kind, ErrorKind::OutOfRange | ErrorKind::Schema), "{field}: {e}");
+    }
+}
+
+#[test]
+fn field_csv_has_the_fixed_columns_and_large_boxes_write_npy() {
+    let out = go(
+        "",
+        "{ x = [-1.5, 1.5, 201], y = [-1, 1, 101], z = [0.1, 1.0, 2], scale = \"a\" }",
+        "grid = 16",
+    )
+    .unwrap();
+    let v = out.field.volume().unwrap();
+    assert!(v.values.is_none(), "40,602 points are not inlined");
+    let dir = std::env::temp_dir().join(format!("stickslip-field3d-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    write_outputs(&out, &dir, false).unwrap();
+    let csv = std::fs::read_to_string(dir.join("field.csv")).unwrap();
+    assert_eq!(
+        csv.lines().next().unwrap(),
+        "x,y,z,sxx,syy,szz,sxy,syz,sxz,von_mises,tresca,max_principal"
+    );
+    assert_eq!(csv.lines().count(), 1 + 201 * 101 * 2);
+    let npy = std::fs::read(dir.join("field_szz.npy")).unwrap();
+    assert_eq!(&npy[..8], b"\x93NUMPY\x01\x00");
+    let hlen = u16::from_le_bytes([npy[8], npy[9]]) as usize;
+    assert_eq!((10 + hlen) % 64, 0, "header padded to 64 bytes");
+    let header = std::str::from_utf8(&npy[10..10 + hlen]).unwrap();
+    assert!(
+        header.contains("'descr': '<f8'") && header.contains("'shape': (2, 101, 201)"),
+        "{header}"
+    );
+    assert_eq!(npy.len(), 10 + hlen + 8 * 201 * 101 * 2);
+    // the first value is the first szz of the result
+    let first = f64::from_le_bytes(npy[10 + hlen..18 + hlen].try_into().unwrap());
+    assert_eq!(first, v.arrays.szz[0]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
