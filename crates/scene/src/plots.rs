@@ -376,6 +376,50 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
             ));
         }
     }
+    if let Some(v) = out.field.volume() {
+        let a = &v.arrays;
+        let (nx, ny, nz) = (v.x.len(), v.y.len(), v.z.len());
+        let (i0, j0) = (nx / 2, ny / 2);
+        for (name, data) in [
+            ("von_mises", &a.von_mises),
+            ("tresca", &a.tresca),
+            ("max_principal", &a.max_principal),
+            ("szz", &a.szz),
+        ] {
+            if nx > 1 && nz > 1 {
+                let rows: Vec<Vec<f64>> = (0..nz)
+                    .map(|k| (0..nx).map(|i| data[(k * ny + j0) * nx + i]).collect())
+                    .collect();
+                files.push((
+                    format!("field_{name}_xz.svg"),
+                    heat_map(
+                        &format!("{name} (Pa), section y = {:.3e} m", v.y[j0]),
+                        &v.x,
+                        &v.z,
+                        &rows,
+                        true,
+                        "depth z (m)",
+                    )?,
+                ));
+            }
+            if ny > 1 && nz > 1 {
+                let rows: Vec<Vec<f64>> = (0..nz)
+                    .map(|k| (0..ny).map(|j| data[(k * ny + j) * nx + i0]).collect())
+                    .collect();
+                files.push((
+                    format!("field_{name}_yz.svg"),
+                    heat_map(
+                        &format!("{name} (Pa), section x = {:.3e} m", v.x[i0]),
+                        &v.y,
+                        &v.z,
+                        &rows,
+                        true,
+                        "depth z (m)",
+                    )?,
+                ));
+            }
+        }
+    }
     if let Some(c) = &out.cycle {
         files.push((
             "cycle.svg".to_string(),
