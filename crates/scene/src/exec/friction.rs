@@ -290,18 +290,15 @@ pub(crate) fn mindlin(
             }
         }
     }
-    let [sub, ind] = &r.bodies;
-    let d = [m.compliance_per_body(sub), m.compliance_per_body(ind)];
+    let d = [m.compliance_per_body(&r.bodies[0]), m.compliance_per_body(&r.bodies[1])];
     Ok(TangentialOut {
-        tangential: force.signed,
-        moment: 0.0,
-        rigid: RigidOut { tangential: Some(d[0] + d[1]), rotation: None, per_body: Some(d) },
         zones: Zones {
             stick: vec![[0.0, astar]],
             slip: vec![[astar, n.ax]],
             coordinate: "radius",
             grid: None,
         },
+        ..shifted(force, d)
     })
 }
 
@@ -339,17 +336,25 @@ pub(crate) fn cattaneo(
             }
         }
     }
-    let [sub, ind] = &r.bodies;
-    let d = [m.compliance_per_body(sub), m.compliance_per_body(ind)];
+    let d = [m.compliance_per_body(&r.bodies[0]), m.compliance_per_body(&r.bodies[1])];
     Ok(TangentialOut {
-        tangential: force.signed,
-        moment: 0.0,
-        rigid: RigidOut { tangential: Some(d[0] + d[1]), rotation: None, per_body: Some(d) },
         zones: Zones {
             stick: vec![[-sc * al, sc * al]],
             slip: vec![[-al, -sc * al], [sc * al, al]],
             coordinate: "x along the load",
             grid: None,
         },
+        ..shifted(force, d)
     })
+}
+
+/// The outcome of a closed-form force on a circle or ellipse: the force, no moment, and the
+/// rigid shift `d` per body (their sum relative), zones to be filled in.
+fn shifted(force: Force, d: [f64; 2]) -> TangentialOut {
+    TangentialOut {
+        tangential: force.signed,
+        moment: 0.0,
+        rigid: RigidOut { tangential: Some(d[0] + d[1]), rotation: None, per_body: Some(d) },
+        zones: Zones { stick: vec![], slip: vec![], coordinate: "", grid: None },
+    }
 }
