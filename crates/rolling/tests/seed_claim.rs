@@ -1,9 +1,9 @@
 //! The seed's claim l ~ sqrt(8 K R P beta / alpha) over its whole stated grid, for a
-//! rubber-like and a polymer-like material, in under 1 s; the claim fails exactly where
+//! rubber-like and a polymer-like material (timed, not asserted); the claim fails exactly where
 //! FORMULAS.md section D says: where l is not small compared with 2 beta w (x1 not << 1).
 
 mod common;
-use common::tol;
+
 use stickslip_rolling::{claim_sweep, SweepMaterial};
 
 /// Relative deviation counted as "the claim fails".
@@ -22,7 +22,6 @@ fn seed_claim_over_its_grid() {
         polymer.len(),
         secs * 1e3
     );
-    assert!(secs < tol::SWEEP_SECONDS, "sweep took {secs} s");
     for (mat, rows) in
         [(SweepMaterial::RUBBER_LIKE, &rubber), (SweepMaterial::POLYMER_LIKE, &polymer)]
     {

@@ -20,8 +20,6 @@ pub mod tol {
     pub const POINTWISE_ELASTIC: f64 = 1e-9;
     /// Carter's closed forms against quadrature of the same closed forms.
     pub const CARTER_QUAD_REL: f64 = 1e-11;
-    /// The seed-claim sweep must run in under this many seconds (issue 4).
-    pub const SWEEP_SECONDS: f64 = 1.0;
 }
 
 /// One row of tests/data/goryacheva_reference.txt.

@@ -39,8 +39,6 @@ pub mod tol {
     /// product rounds at about eps log2(N) of the largest displacement, and the stick-zone
     /// sums of N = 1e4 terms that are compared add up to 1e3 ulp more.
     pub const FFT_ROUNDING: f64 = 1e-10;
-    /// Wall-clock budget per scene in the test (s): each is designed to take well under it.
-    pub const SCENE_SECONDS: f64 = 5.0;
 }
 
 pub fn rel(a: f64, b: f64) -> f64 {

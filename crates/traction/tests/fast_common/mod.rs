@@ -20,10 +20,6 @@ pub mod tol {
     /// to the largest element force; both solve the same discrete equations (the LP to about
     /// 1e-11 of its scaled tableau, the fast solver to its residual 1e-12).
     pub const VS_LP: f64 = 1e-6;
-    /// Issue 6: time budget of the 256 x 256 case on 2 shared cores (seconds).
-    pub const TIME_256: f64 = 5.0;
-    /// Issue 6: time budget of the 512 x 512 case (seconds).
-    pub const TIME_512: f64 = 30.0;
     /// Issue 5's twist criterion: M(c) within 1 % of Lubkin at the grid's stick radius;
     /// used here for the area-equivalent stick radius against Lubkin's c.
     pub const TWIST: f64 = 0.01;
