@@ -115,11 +115,12 @@ fn bench(c: &mut Criterion) {
         let after = peak_rss();
         let n = side * side;
         println!(
-            "accuracy normal {side}x{side} free rough sphere (FFT {:?}): {} iterations, residuals \
+            "accuracy normal {side}x{side} free rough sphere (FFT {:?}): {} iterations ({} FFT products), residuals \
              gap {:.1e} complementarity {:.1e} force {:.1e}; contact fraction {:.4}, {} cells; \
              one solve {secs:.3} s (setup {:.3} s); peak memory growth {:.1} doubles per cell",
             s.info.fft_size,
             s.info.iterations,
+            s.info.products,
             s.info.gap_residual,
             s.info.complementarity_residual,
             s.info.force_residual,
