@@ -463,7 +463,7 @@ impl<'a> NormalProblem<'a> {
 
     /// The composite modulus $E^*$ of the two bodies (Pa).
     #[must_use]
-    pub fn composite_modulus(&self) -> f64 {
+    pub fn e_star(&self) -> f64 {
         stickslip_halfspace::material::composite_modulus(&self.bodies[0], &self.bodies[1])
     }
 
