@@ -18,7 +18,7 @@ use std::f64::consts::PI;
 use std::time::Instant;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
-use stickslip_traction::{Boundary, NormalLoad, NormalProblem, Tolerance};
+use stickslip_traction::{Boundary, NormalLoad, NormalOperator, NormalProblem, Tolerance};
 
 /// splitmix64 in [0, 1).
 struct Rng(u64);
@@ -129,6 +129,21 @@ fn bench(c: &mut Criterion) {
             s.info.setup_seconds,
             after.saturating_sub(before) as f64 / (8.0 * n as f64),
         );
+        // The cost of one FFT product alone (the solve is about `products` of them).
+        let op = NormalOperator::new(&problem);
+        let mut scratch = op.make_scratch();
+        let mut u = vec![0.0; n];
+        let t1 = Instant::now();
+        for _ in 0..5 {
+            op.apply(&s.pressure, &mut u, &mut scratch);
+        }
+        println!(
+            "normal {side}x{side}: one FFT product {:.1} ms, {} products = {:.3} s of the solve",
+            t1.elapsed().as_secs_f64() / 5.0 * 1e3,
+            s.info.products,
+            t1.elapsed().as_secs_f64() / 5.0 * s.info.products as f64
+        );
+        drop((op, scratch, u));
         if side <= 512 || extended {
             group.bench_with_input(BenchmarkId::from_parameter(n), &problem, |b, p| {
                 b.iter(|| p.solve(NormalLoad::Force(load)).expect("solve"))

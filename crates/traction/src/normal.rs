@@ -583,32 +583,63 @@ impl<'a> NormalProblem<'a> {
         // when few cells are clipped or re-enter); `fresh` says it is a full product of the
         // current p, which the certified stop requires.
         let mut fresh = false;
+        // Force control: the rescaling factor of p (and of an incrementally updated u) still
+        // to apply, fused into the next pass over the lattice.
+        let mut pending = 1.0;
         let mut delta;
         let mut res;
+        let sum_target = force.map(|f| f / area);
         loop {
             if !fresh {
+                if pending != 1.0 {
+                    let f = pending;
+                    p.par_iter_mut().for_each(|p| *p *= f);
+                    pending = 1.0;
+                }
                 op.apply(&p, &mut u, &mut scratch);
                 products += 1;
                 fresh = true;
             }
-            // Gap without the approach, then the approach (force control: mean over I_c).
-            g.par_iter_mut().zip(u.par_iter().zip(g0.par_iter())).for_each(|(g, (u, g0))| {
-                *g = u + g0;
-            });
+            // Gap without the approach (and the pending rescaling), then the approach (force
+            // control: mean over I_c).
+            let f = pending;
+            pending = 1.0;
+            let (gs, gc) = g
+                .par_iter_mut()
+                .zip(u.par_iter_mut().zip(g0.par_iter().zip(p.par_iter_mut())))
+                .map(|(g, (u, (g0, p)))| {
+                    *p *= f;
+                    *u *= f;
+                    *g = *u + g0;
+                    if *p > 0.0 {
+                        (*g, 1usize)
+                    } else {
+                        (0.0, 0)
+                    }
+                })
+                .reduce(|| (0.0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
             delta = match load {
                 NormalLoad::Approach(d) => d,
-                NormalLoad::Force(_) => {
-                    let (s, c) = p
-                        .par_iter()
-                        .zip(g.par_iter())
-                        .filter(|(p, _)| **p > 0.0)
-                        .map(|(_, g)| (*g, 1usize))
-                        .reduce(|| (0.0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
-                    s / c.max(1) as f64
-                }
+                NormalLoad::Force(_) => gs / gc.max(1) as f64,
             };
-            g.par_iter_mut().for_each(|g| *g -= delta);
-            res = residuals(&p, &g, delta - gmin, force.map(|f| f / area));
+            // The gap, the residuals and the squared gap on I_c in one pass.
+            let (emax, pg, ps, gg) = g
+                .par_iter_mut()
+                .zip(p.par_iter())
+                .map(|(g, &p)| {
+                    *g -= delta;
+                    let g = *g;
+                    if p > 0.0 {
+                        (g.abs(), p * g.abs(), p, g * g)
+                    } else {
+                        ((-g).max(0.0), 0.0, 0.0, 0.0)
+                    }
+                })
+                .reduce(
+                    || (0.0, 0.0, 0.0, 0.0),
+                    |a, b| (a.0.max(b.0), a.1 + b.1, a.2 + b.2, a.3 + b.3),
+                );
+            res = residuals(emax, pg, ps, delta - gmin, sum_target);
             if res.3 <= tol {
                 if fresh {
                     break;
@@ -626,8 +657,6 @@ impl<'a> NormalProblem<'a> {
             }
             iterations += 1;
             // Conjugate direction on the contact set.
-            let gg: f64 =
-                p.par_iter().zip(g.par_iter()).filter(|(p, _)| **p > 0.0).map(|(_, g)| g * g).sum();
             let beta = if conjugate { gg / g_old } else { 0.0 };
             g_old = gg;
             t.par_iter_mut().zip(p.par_iter().zip(g.par_iter())).for_each(|(t, (p, g))| {
@@ -648,26 +677,40 @@ impl<'a> NormalProblem<'a> {
             let rbar = if force.is_some() { rs / c.max(1) as f64 } else { 0.0 };
             let den = den - rbar * ts;
             let tau = if den > 0.0 { num / den } else { 0.0 };
-            // Step, projection, re-entry of penetrating cells; `changes` the departures from
-            // p - tau t (clipped or re-entered cells), whose product corrects u.
-            u.par_iter_mut().zip(r.par_iter()).for_each(|(u, r)| *u -= tau * r);
-            let changes: Vec<(usize, f64)> = p
+            // Step, projection, re-entry of penetrating cells, u -= tau K t, and the new force,
+            // in one pass; `changes` the departures from p - tau t (clipped or re-entered
+            // cells), whose columns correct u.
+            let (changes, sum) = p
                 .par_iter_mut()
-                .zip(g.par_iter().zip(t.par_iter()))
+                .zip(u.par_iter_mut().zip(g.par_iter().zip(t.par_iter().zip(r.par_iter()))))
                 .enumerate()
-                .filter_map(|(k, (p, (g, t)))| {
-                    if *p > 0.0 {
-                        let free = *p - tau * t;
-                        *p = free.max(0.0);
-                        (free < 0.0).then_some((k, -free))
-                    } else if *g < 0.0 {
-                        *p = -tau.max(0.0) * g;
-                        (*p > 0.0).then_some((k, *p))
-                    } else {
-                        None
-                    }
-                })
-                .collect();
+                .fold(
+                    || (Vec::new(), 0.0),
+                    |(mut ch, mut sum): (Vec<(usize, f64)>, f64), (k, (p, (u, (g, (t, r)))))| {
+                        *u -= tau * r;
+                        if *p > 0.0 {
+                            let free = *p - tau * t;
+                            *p = free.max(0.0);
+                            if free < 0.0 {
+                                ch.push((k, -free));
+                            }
+                        } else if *g < 0.0 {
+                            *p = -tau.max(0.0) * g;
+                            if *p > 0.0 {
+                                ch.push((k, *p));
+                            }
+                        }
+                        sum += *p;
+                        (ch, sum)
+                    },
+                )
+                .reduce(
+                    || (Vec::new(), 0.0),
+                    |(mut a, sa), (b, sb)| {
+                        a.extend(b);
+                        (a, sa + sb)
+                    },
+                );
             let entered = changes.iter().filter(|&&(k, _)| t[k] == 0.0).count();
             conjugate = entered == 0;
             // Few changes: add their columns to u; many: a full product at the next check
@@ -679,13 +722,9 @@ impl<'a> NormalProblem<'a> {
             fresh = incremental && iterations % REFRESH != 0;
             match force {
                 Some(pf) => {
-                    let sum: f64 = p.par_iter().sum();
                     if sum > 0.0 {
-                        let f = pf / area / sum;
-                        p.par_iter_mut().for_each(|p| *p *= f);
-                        if incremental {
-                            u.par_iter_mut().for_each(|u| *u *= f);
-                        }
+                        // Applied to p and u by the next pass (or before the next product).
+                        pending = pf / area / sum;
                     } else {
                         // Everything left the contact: restart uniform.
                         p.fill(1.0);
@@ -781,14 +820,10 @@ fn rescale(p: &mut [f64], target: f64) -> bool {
     }
 }
 
-/// $(r_g, r_c, r_F, \max)$ of the module docs; `scale` the gap scale, `sum` the prescribed
+/// $(r_g, r_c, r_F, \max)$ of the module docs from the pass's $\max_k e_k$,
+/// $\sum_k p_k|g_k|$ and $\sum_k p_k$; `scale` the gap scale, `sum` the prescribed
 /// $\sum_k p_k$ (force control).
-fn residuals(p: &[f64], g: &[f64], scale: f64, sum: Option<f64>) -> (f64, f64, f64, f64) {
-    let (emax, pg, ps) = p
-        .par_iter()
-        .zip(g.par_iter())
-        .map(|(&p, &g)| if p > 0.0 { (g.abs(), p * g.abs(), p) } else { ((-g).max(0.0), 0.0, 0.0) })
-        .reduce(|| (0.0, 0.0, 0.0), |a, b| (a.0.max(b.0), a.1 + b.1, a.2 + b.2));
+fn residuals(emax: f64, pg: f64, ps: f64, scale: f64, sum: Option<f64>) -> (f64, f64, f64, f64) {
     let scale = if scale > 0.0 { scale } else { f64::MIN_POSITIVE };
     let rg = emax / scale;
     let rc = if ps > 0.0 { pg / (ps * scale) } else { 0.0 };
