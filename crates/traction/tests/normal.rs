@@ -3,6 +3,7 @@
 //! computed contact to the tangential solver. Every measured error is printed.
 
 use std::f64::consts::PI;
+use stickslip_halfspace::hertz::HertzEllipse;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::rectangle::{pressure_uz, Compliance, Rect};
 use stickslip_halfspace::Material;
@@ -109,6 +110,52 @@ fn hertz_sphere_64_across() {
 fn hertz_sphere_128_across() {
     let (ea, ep, ed, _) = hertz(128);
     assert!(ea.abs() <= 1.0, "contact radius {ea} cells");
+    assert!(ep.abs() <= tol::HERTZ_P0, "p0 {ep}");
+    assert!(ed.abs() <= tol::HERTZ_APPROACH, "approach {ed}");
+}
+
+/// Hertz ellipse (R'x = 10 mm, R'y = 30 mm) with 128 cells across the major axis: the
+/// semi-axes from the outermost contact cells, the peak pressure and the approach against
+/// `HertzEllipse` (Johnson §3.4, elliptic integrals).
+#[test]
+fn hertz_ellipse_128_across() {
+    let m = steel();
+    let es = composite_modulus(&m, &m);
+    let (rx, ry) = (0.01, 0.03);
+    let load = 20.0;
+    let e = HertzEllipse::new(rx, ry, load, es).unwrap();
+    let (a, b) = (e.semi_axis_x(), e.semi_axis_y());
+    let h = 2.0 * a.max(b) / 128.0;
+    let nx = (2.0 * a / h * 1.2) as usize / 2 * 2 + 4;
+    let ny = (2.0 * b / h * 1.2) as usize / 2 * 2 + 4;
+    let g0: Vec<f64> = (0..nx * ny)
+        .map(|k| {
+            let (x, y) = centre(k, nx, ny, h);
+            x * x / (2.0 * rx) + y * y / (2.0 * ry)
+        })
+        .collect();
+    let s = NormalProblem::new(nx, ny, (h, h), &g0, [m, m], Boundary::Free)
+        .unwrap()
+        .solve(NormalLoad::Force(load))
+        .unwrap();
+    let (mut xm, mut ym) = (0.0f64, 0.0f64);
+    for k in (0..nx * ny).filter(|&k| s.contact[k]) {
+        let (x, y) = centre(k, nx, ny, h);
+        xm = xm.max(x.abs());
+        ym = ym.max(y.abs());
+    }
+    // The contact edge lies within the half cell beyond the outermost contact centre.
+    let (ea, eb) = ((xm + 0.5 * h - a) / h, (ym + 0.5 * h - b) / h);
+    let ep = s.peak_pressure / e.max_pressure() - 1.0;
+    let ed = s.approach / e.approach() - 1.0;
+    println!(
+        "hertz ellipse b/a = {:.3}, {nx}x{ny} ({} it, {:.2} s): a {ea:+.2} cells, b {eb:+.2} cells, \
+         p0 {ep:+.2e}, approach {ed:+.2e}",
+        b / a,
+        s.info.iterations,
+        s.info.setup_seconds + s.info.solve_seconds
+    );
+    assert!(ea.abs() <= 1.0 && eb.abs() <= 1.0, "semi-axes {ea}, {eb} cells");
     assert!(ep.abs() <= tol::HERTZ_P0, "p0 {ep}");
     assert!(ed.abs() <= tol::HERTZ_APPROACH, "approach {ed}");
 }
@@ -396,6 +443,32 @@ fn force_and_displacement_control_agree() {
     // A warm start from the solution converges at once.
     let w = pb.solve_with(&op, NormalLoad::Force(0.5), Some(&f.pressure)).unwrap();
     assert!(w.info.iterations <= 2, "warm start {} it", w.info.iterations);
+
+    // Periodic: Westergaard's wave in partial contact.
+    let (f, _) = westergaard(256, 0.3);
+    let g0: Vec<f64> = (0..256 * 4)
+        .map(|k| {
+            let x = (k % 256) as f64 * f.hx + 0.5 * f.hx - 0.5e-3;
+            1e-6 * (1.0 - (2.0 * PI * x / 1e-3).cos())
+        })
+        .collect();
+    let d = NormalProblem::new(
+        256,
+        4,
+        (f.hx, f.hy),
+        &g0,
+        [steel(), Material::rigid()],
+        Boundary::Periodic,
+    )
+    .unwrap()
+    .with_tolerance(tight())
+    .solve(NormalLoad::Approach(f.approach))
+    .unwrap();
+    let e = f.pressure.iter().zip(&d.pressure).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
+        / f.peak_pressure;
+    let ef = d.force / f.force - 1.0;
+    println!("periodic force vs displacement control: pressure {e:.1e}, force {ef:+.1e}");
+    assert!(e <= tol::CONTROL && ef.abs() <= tol::CONTROL);
 }
 
 #[test]
@@ -414,6 +487,9 @@ fn typed_errors_and_outcomes() {
     let s = pb.solve(NormalLoad::Approach(-1e-9)).unwrap();
     assert!(s.no_contact && s.force == 0.0 && s.contact_cells == 0);
     assert!(s.contact_grid().is_err());
+    // A contact wider than the lattice: a result, said so.
+    let s = pb.solve(NormalLoad::Force(2e3)).unwrap();
+    assert!(s.touches_boundary);
     // Unresolved: a tiny load touches a handful of cells.
     match pb.solve(NormalLoad::Force(1e-6)) {
         Err(Error::UnresolvedContact { cells, minimum }) => {
