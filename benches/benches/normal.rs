@@ -79,6 +79,22 @@ fn surface(side: usize, h: f64) -> (Vec<f64>, f64) {
     (gap.into_iter().map(|g| g - gmin).collect(), load)
 }
 
+/// CPU time (user + system) of the process so far, seconds (from /proc; 0 if unknown): on a
+/// shared machine the wall time depends on the other load, the CPU time less (it includes
+/// the spinning of idle rayon workers).
+fn cpu_seconds() -> f64 {
+    std::fs::read_to_string("/proc/self/stat")
+        .ok()
+        .and_then(|s| {
+            let rest = s.rsplit_once(')')?.1.split_whitespace().collect::<Vec<_>>();
+            // Fields 14 and 15 (utime, stime) are at 11, 12 after the command name.
+            let u: f64 = rest.get(11)?.parse().ok()?;
+            let k: f64 = rest.get(12)?.parse().ok()?;
+            Some((u + k) / 100.0)
+        })
+        .unwrap_or(0.0)
+}
+
 /// Peak resident memory of the process (VmHWM), bytes; 0 if unknown.
 fn peak_rss() -> usize {
     std::fs::read_to_string("/proc/self/status")
@@ -109,15 +125,17 @@ fn bench(c: &mut Criterion) {
             .with_tolerance(tol)
             .with_min_contact_cells(1);
         let before = peak_rss();
+        let c0 = cpu_seconds();
         let t0 = Instant::now();
         let s = problem.solve(NormalLoad::Force(load)).expect("solve");
         let secs = t0.elapsed().as_secs_f64();
+        let cpu = cpu_seconds() - c0;
         let after = peak_rss();
         let n = side * side;
         println!(
             "accuracy normal {side}x{side} free rough sphere (FFT {:?}): {} iterations ({} FFT products), residuals \
              gap {:.1e} complementarity {:.1e} force {:.1e}; contact fraction {:.4}, {} cells; \
-             one solve {secs:.3} s (setup {:.3} s); peak memory growth {:.1} doubles per cell",
+             one solve {secs:.3} s wall, {cpu:.2} s CPU (setup {:.3} s); peak memory growth {:.1} doubles per cell",
             s.info.fft_size,
             s.info.iterations,
             s.info.products,
@@ -133,15 +151,18 @@ fn bench(c: &mut Criterion) {
         let op = NormalOperator::new(&problem);
         let mut scratch = op.make_scratch();
         let mut u = vec![0.0; n];
-        let t1 = Instant::now();
+        let (c1, t1) = (cpu_seconds(), Instant::now());
         for _ in 0..5 {
             op.apply(&s.pressure, &mut u, &mut scratch);
         }
+        let (wall, cpu) = (t1.elapsed().as_secs_f64() / 5.0, (cpu_seconds() - c1) / 5.0);
         println!(
-            "normal {side}x{side}: one FFT product {:.1} ms, {} products = {:.3} s of the solve",
-            t1.elapsed().as_secs_f64() / 5.0 * 1e3,
+            "normal {side}x{side}: one FFT product {:.1} ms wall, {:.1} ms CPU; {} products = \
+             {:.3} s wall of the solve",
+            wall * 1e3,
+            cpu * 1e3,
             s.info.products,
-            t1.elapsed().as_secs_f64() / 5.0 * s.info.products as f64
+            wall * s.info.products as f64
         );
         drop((op, scratch, u));
         if side <= 512 || extended {
