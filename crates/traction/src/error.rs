@@ -126,6 +126,16 @@ pub enum Error {
         /// Index of the failing pivot.
         index: usize,
     },
+    /// The computed contact covers fewer lattice cells than the normal solver accepts as
+    /// resolved ([`crate::normal::NormalProblem::with_min_contact_cells`]): refine the lattice
+    /// (or raise the load).
+    #[error("the contact covers {cells} lattice cells, fewer than the {minimum} needed to resolve it: refine the lattice (smaller cells) or raise the load")]
+    UnresolvedContact {
+        /// Contact cells found.
+        cells: usize,
+        /// The minimum accepted.
+        minimum: usize,
+    },
     /// An error from the half-space crate (influence coefficients, Hertz).
     #[error("half-space: {0}")]
     Halfspace(String),

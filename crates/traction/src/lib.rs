@@ -8,7 +8,9 @@
 //! * [`lp`]: the modified linear program of seed 002, Fig. 3.5;
 //! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid;
 //! * [`fast`]: the fast solver (both traction components free, FFT products);
-//! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]).
+//! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]);
+//! * [`normal`]: normal contact of any surface on a lattice (constrained conjugate
+//!   gradients, free or periodic), whose contact feeds the tangential solvers.
 //!
 //! Units: any consistent set (SI, or inch–lbf–psi as in seed 002's examples).
 #![cfg_attr(docsrs, feature(doc_auto_cfg))]
@@ -21,6 +23,7 @@ pub mod field;
 pub mod grid;
 pub mod influence;
 pub mod lp;
+pub mod normal;
 pub mod solve;
 
 pub use contract::{
@@ -31,6 +34,9 @@ pub use fast::{FastConfig, FastProblem, FastSolution, TractionDirections};
 pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
 pub use influence::InfluenceModel;
 pub use lp::{LpConfig, LpSolution};
+pub use normal::{
+    Boundary, NormalInfo, NormalLoad, NormalOperator, NormalProblem, NormalScratch, NormalSolution,
+};
 pub use solve::{
     DirectionAssumption, ElementState, PatchSummary, Regime, SolveInfo, TractionProblem,
     TractionSolution,

@@ -321,9 +321,12 @@ impl TensorConvolution {
                     for (i, v) in rs.iter_mut().enumerate() {
                         *v = spec[i * my + j];
                     }
-                    // The DC and Nyquist bins of a real signal are real; clear the rounding.
+                    // The DC and (even sizes) Nyquist bins of a real signal are real; clear
+                    // the rounding.
                     rs[0].im = 0.0;
-                    rs[mxh - 1].im = 0.0;
+                    if mx % 2 == 0 {
+                        rs[mxh - 1].im = 0.0;
+                    }
                     let _ = self.c2r.process_with_scratch(rs, row, scr);
                     for (o, r) in out.iter_mut().zip(row.iter()) {
                         *o = r * scale;
@@ -383,6 +386,124 @@ impl TensorConvolution {
                 *o = s.lat[f][c];
             }
         }
+    }
+}
+
+/// The scalar (normal) operator on a full $n_x\times n_y$ lattice, for [`crate::normal`]:
+/// the same planned row/column FFTs as the tangential tensor, one real kernel spectrum
+/// (stored in `kxx`; `kxy`, `kyy` empty), arrays row-major `[j * nx + i]`.
+impl TensorConvolution {
+    fn scalar_plan(nx: usize, ny: usize, mx: usize, my: usize) -> Self {
+        let mut rplan = RealFftPlanner::<f64>::new();
+        let mut cplan = FftPlanner::<f64>::new();
+        Self {
+            n: nx * ny,
+            nx,
+            ny,
+            mx,
+            my,
+            mxh: mx / 2 + 1,
+            cell: Vec::new(),
+            kxx: Vec::new(),
+            kxy: Vec::new(),
+            kyy: Vec::new(),
+            self_term: [0.0; 3],
+            r2c: rplan.plan_fft_forward(mx),
+            c2r: rplan.plan_fft_inverse(mx),
+            col_fwd: cplan.plan_fft_forward(my),
+            col_inv: cplan.plan_fft_inverse(my),
+        }
+    }
+
+    /// Aperiodic (zero-padded, $M \ge 2n-1$ per axis) scalar convolution with the even kernel
+    /// `kernel(di, dj)` $= K(|\Delta i|, |\Delta j|)$, evaluated for $0\le d_i<n_x$,
+    /// $0\le d_j<n_y$.
+    pub(crate) fn scalar_free(
+        nx: usize,
+        ny: usize,
+        kernel: impl Fn(usize, usize) -> f64 + Sync,
+    ) -> Self {
+        let mut op = Self::scalar_plan(nx, ny, fast_size(2 * nx - 1), fast_size(2 * ny - 1));
+        let (mx, my, mxh) = (op.mx, op.my, op.mxh);
+        let quad: Vec<f64> = (0..ny)
+            .into_par_iter()
+            .flat_map_iter(|dj| (0..nx).map(move |di| (di, dj)).collect::<Vec<_>>())
+            .map(|(di, dj)| kernel(di, dj))
+            .collect();
+        op.self_term = [quad[0], 0.0, quad[0]];
+        let mut lat = vec![0.0; mx * my];
+        for dj in 0..ny {
+            for di in 0..nx {
+                let v = quad[dj * nx + di];
+                for ej in [dj, (my - dj) % my] {
+                    for ei in [di, (mx - di) % mx] {
+                        lat[ej * mx + ei] = v;
+                    }
+                }
+            }
+        }
+        drop(quad);
+        let mut rowspec = vec![C64::new(0.0, 0.0); my * mxh];
+        let mut spec = vec![C64::new(0.0, 0.0); mxh * my];
+        op.forward(
+            my,
+            |j, row| row.copy_from_slice(&lat[j * mx..(j + 1) * mx]),
+            &mut rowspec,
+            &mut spec,
+        );
+        op.kxx = spec.iter().map(|z| z.re).collect();
+        op
+    }
+
+    /// Periodic scalar convolution on the $n_x\times n_y$ torus (no padding) with the transfer
+    /// function `transfer(kx, ky)` (displacement Fourier coefficient per pressure Fourier
+    /// coefficient at the wave vector $(k_x, k_y)$, rad/m); `(lx, ly)` the periods.
+    pub(crate) fn scalar_periodic(
+        nx: usize,
+        ny: usize,
+        (lx, ly): (f64, f64),
+        transfer: impl Fn(f64, f64) -> f64,
+    ) -> Self {
+        let mut op = Self::scalar_plan(nx, ny, nx, ny);
+        let (my, mxh) = (op.my, op.mxh);
+        let two_pi = 2.0 * std::f64::consts::PI;
+        let mut k = vec![0.0; mxh * my];
+        for i in 0..mxh {
+            for j in 0..my {
+                let jj = if 2 * j <= my { j as f64 } else { j as f64 - my as f64 };
+                k[i * my + j] = transfer(two_pi * i as f64 / lx, two_pi * jj / ly);
+            }
+        }
+        op.kxx = k;
+        op
+    }
+
+    /// Work space of [`TensorConvolution::apply_scalar`] (two complex arrays, about
+    /// $3M_xM_y/2$ complex numbers).
+    pub(crate) fn make_scalar_scratch(&self) -> ConvScratch {
+        let z = C64::new(0.0, 0.0);
+        ConvScratch {
+            lat: [Vec::new(), Vec::new()],
+            rowspec: [vec![z; self.ny * self.mxh], Vec::new()],
+            spec: [vec![z; self.mxh * self.my], Vec::new()],
+        }
+    }
+
+    /// $u = K * q$ for the scalar kernel of [`TensorConvolution::scalar_free`] or
+    /// [`TensorConvolution::scalar_periodic`]; `q`, `u` row-major $n_x\times n_y$.
+    pub(crate) fn apply_scalar(&self, q: &[f64], u: &mut [f64], s: &mut ConvScratch) {
+        assert!(q.len() == self.n && u.len() == self.n, "lattice length");
+        let nx = self.nx;
+        let [rowspec, _] = &mut s.rowspec;
+        let [spec, _] = &mut s.spec;
+        self.forward(
+            self.ny,
+            |j, row| row[..nx].copy_from_slice(&q[j * nx..(j + 1) * nx]),
+            rowspec,
+            spec,
+        );
+        spec.par_iter_mut().zip(self.kxx.par_iter()).for_each(|(a, k)| *a *= *k);
+        self.inverse(spec, rowspec, u);
     }
 }
 
