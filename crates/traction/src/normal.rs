@@ -52,8 +52,9 @@
 //! # Certified stop: the residuals
 //!
 //! At every iteration the current pressure $p$ is checked against the conditions above with
-//! a fresh product $u = Kp$ and the gap $g = g^0 + u - \delta$ (force control: $\delta$ the
-//! mean of $g^0 + u$ over $I_c$). The gap scale is the rigid interference
+//! $u = Kp$ and the gap $g = g^0 + u - \delta$ (force control: $\delta$ the mean of
+//! $g^0 + u$ over $I_c$); the stop is accepted only on a fresh product $u = Kp$ (not the
+//! incrementally updated one). The gap scale is the rigid interference
 //! $s = \delta - \min_k g^0_k$ (the largest overlap the bodies would have without
 //! deformation; positive whenever they touch). The solve stops when all three are at most
 //! the relative tolerance $\varepsilon$:
@@ -74,6 +75,10 @@
 //! * Displacement control with $\delta \le \min_k g^0_k$ (the gap never closes): zero load,
 //!   no contact, [`NormalSolution::no_contact`] set — a result, not an error.
 //! * Full contact (every cell, e.g. a periodic surface pressed flat) is a result.
+//! * [`Boundary::Periodic`] under displacement control needs $\delta$ below the mean initial
+//!   gap: a uniform pressure does not move a periodic surface relative to its mean, so at
+//!   $\delta \ge \overline{g^0}$ (full contact) the force is unbounded; such an approach is
+//!   refused ([`Error::OutOfDomain`], named "approach"); use force control there.
 //! * A contact on fewer than [`NormalProblem::with_min_contact_cells`] cells
 //!   (default [`DEFAULT_MIN_CONTACT_CELLS`]) is refused with [`Error::UnresolvedContact`].
 //! * [`NormalSolution::touches_boundary`] says whether, under [`Boundary::Free`], the contact
@@ -286,15 +291,15 @@ impl NormalOperator {
                         }
                     },
                 );
-                // Self-term of the periodic kernel: the mean of the transfer.
-                let cell = Rect { x1: -0.5 * hx, x2: 0.5 * hx, y1: -0.5 * hy, y2: 0.5 * hy };
-                (conv, pressure_uz(&c, &cell, 0.0, 0.0))
+                (conv, 0.0)
             }
         };
         let mut column = vec![0.0; nx * ny];
         let mut unit = vec![0.0; nx * ny];
         unit[0] = 1.0;
         conv.apply_scalar(&unit, &mut column, &mut conv.make_scalar_scratch());
+        // Periodic: the self-term is the kernel's own (free: the exact rectangle value).
+        let self_term = if problem.boundary == Boundary::Periodic { column[0] } else { self_term };
         Self {
             conv,
             nx,
@@ -482,7 +487,8 @@ impl<'a> NormalProblem<'a> {
     ///
     /// # Errors
     /// [`Error::ToleranceOutOfRange`]; [`Error::OutOfDomain`] for a force that is not finite
-    /// and $> 0$ or a non-finite approach; [`Error::LengthMismatch`] for an operator or warm
+    /// and $> 0$, a non-finite approach, or (periodic) an approach at or above the mean
+    /// initial gap; [`Error::LengthMismatch`] for an operator or warm
     /// start of another lattice; [`Error::NotConverged`] with the residual reached;
     /// [`Error::UnresolvedContact`] for a contact on fewer cells than the minimum.
     pub fn solve_with(
@@ -527,6 +533,17 @@ impl<'a> NormalProblem<'a> {
         let g0 = self.gap;
         let gmin = g0.iter().copied().fold(f64::INFINITY, f64::min);
 
+        if let (NormalLoad::Approach(d), Boundary::Periodic) = (load, self.boundary) {
+            let mean = g0.iter().sum::<f64>() / n as f64;
+            if d >= mean {
+                return Err(Error::OutOfDomain {
+                    name: "approach",
+                    value: d,
+                    allowed: "below the mean initial gap for a periodic surface (full contact: \
+                              unbounded force under displacement control; use force control)",
+                });
+            }
+        }
         // Displacement control where the gap never closes: zero load, said so.
         if let NormalLoad::Approach(d) = load {
             if d <= gmin {

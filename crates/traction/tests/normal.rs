@@ -469,6 +469,21 @@ fn force_and_displacement_control_agree() {
     let ef = d.force / f.force - 1.0;
     println!("periodic force vs displacement control: pressure {e:.1e}, force {ef:+.1e}");
     assert!(e <= tol::CONTROL && ef.abs() <= tol::CONTROL);
+    // Periodic full contact under displacement control has no finite force: refused.
+    let mean = g0.iter().sum::<f64>() / g0.len() as f64;
+    assert!(matches!(
+        NormalProblem::new(
+            256,
+            4,
+            (f.hx, f.hy),
+            &g0,
+            [steel(), Material::rigid()],
+            Boundary::Periodic
+        )
+        .unwrap()
+        .solve(NormalLoad::Approach(mean)),
+        Err(Error::OutOfDomain { name: "approach", .. })
+    ));
 }
 
 #[test]
