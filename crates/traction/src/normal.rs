@@ -256,6 +256,8 @@ pub struct NormalOperator {
     /// offsets $(|d_i|, |d_j|)$; periodic: at offsets modulo the period).
     column: Vec<f64>,
     periodic: bool,
+    /// What it was planned for: cell sides and $c_1$ of the two bodies.
+    planned: (f64, f64, f64),
     setup_seconds: f64,
 }
 
@@ -307,6 +309,7 @@ impl NormalOperator {
             self_term,
             column,
             periodic: problem.boundary == Boundary::Periodic,
+            planned: (hx, hy, c.one_minus_nu),
             setup_seconds: t0.elapsed().as_secs_f64(),
         }
     }
@@ -487,8 +490,8 @@ impl<'a> NormalProblem<'a> {
     ///
     /// # Errors
     /// [`Error::ToleranceOutOfRange`]; [`Error::OutOfDomain`] for a force that is not finite
-    /// and $> 0$, a non-finite approach, or (periodic) an approach at or above the mean
-    /// initial gap; [`Error::LengthMismatch`] for an operator or warm
+    /// and $> 0$, a non-finite approach, (periodic) an approach at or above the mean
+    /// initial gap, or an operator planned for other cells, boundary or bodies; [`Error::LengthMismatch`] for an operator or warm
     /// start of another lattice; [`Error::NotConverged`] with the residual reached;
     /// [`Error::UnresolvedContact`] for a contact on fewer cells than the minimum.
     pub fn solve_with(
@@ -504,6 +507,16 @@ impl<'a> NormalProblem<'a> {
                 name: "operator lattice",
                 expected: n,
                 got: op.nx * op.ny,
+            });
+        }
+        let c1 = Compliance::pair(&self.bodies[0], &self.bodies[1]).one_minus_nu;
+        if op.periodic != (self.boundary == Boundary::Periodic)
+            || op.planned != (self.hx, self.hy, c1)
+        {
+            return Err(Error::OutOfDomain {
+                name: "operator",
+                value: f64::NAN,
+                allowed: "planned by NormalOperator::new for this lattice, boundary and bodies",
             });
         }
         let force = match load {
