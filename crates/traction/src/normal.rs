@@ -43,7 +43,7 @@
 //! estimated as the mean of $g^0 + u$ over $I_c$ and the pressure rescaled to the load after
 //! every step. Every product with $K$ is one FFT convolution, $O(N\log N)$: one for the
 //! direction, $K\mathbf t$, and $u = Kp$ updated from it ($u \leftarrow u - \tau K\mathbf t$
-//! plus the columns of the few cells clipped or re-entered, added directly when at most 16,
+//! plus the columns of the few cells clipped or re-entered, added directly when at most 32,
 //! else a full product of the new $p$), with a full product every 50 iterations and before the stop.
 //! Displacement control is the same iteration with $\delta$ fixed, without the mean
 //! subtraction and the rescaling (the bound-constrained quadratic program
@@ -104,7 +104,7 @@ pub const DEFAULT_MIN_CONTACT_CELLS: usize = 12;
 
 /// At most this many clipped or re-entered cells per step are corrected by adding kernel
 /// columns directly ($O(N)$ each) instead of one more FFT product.
-const DIRECT_CHANGES: usize = 16;
+const DIRECT_CHANGES: usize = 32;
 
 /// The incrementally updated $u = Kp$ is recomputed by a full product this often (and before
 /// every certified stop).
