@@ -43,7 +43,7 @@
 //! estimated as the mean of $g^0 + u$ over $I_c$ and the pressure rescaled to the load after
 //! every step. Every product with $K$ is one FFT convolution, $O(N\log N)$: one for the
 //! direction, $K\mathbf t$, and $u = Kp$ updated from it ($u \leftarrow u - \tau K\mathbf t$
-//! plus the columns of the few cells clipped or re-entered, added directly when at most 16,
+//! plus the columns of the few cells clipped or re-entered, added directly when at most 32,
 //! else a full product of the new $p$), with a full product every 50 iterations and before the stop.
 //! Displacement control is the same iteration with $\delta$ fixed, without the mean
 //! subtraction and the rescaling (the bound-constrained quadratic program
@@ -52,8 +52,9 @@
 //! # Certified stop: the residuals
 //!
 //! At every iteration the current pressure $p$ is checked against the conditions above with
-//! a fresh product $u = Kp$ and the gap $g = g^0 + u - \delta$ (force control: $\delta$ the
-//! mean of $g^0 + u$ over $I_c$). The gap scale is the rigid interference
+//! $u = Kp$ and the gap $g = g^0 + u - \delta$ (force control: $\delta$ the mean of
+//! $g^0 + u$ over $I_c$); the stop is accepted only on a fresh product $u = Kp$ (not the
+//! incrementally updated one). The gap scale is the rigid interference
 //! $s = \delta - \min_k g^0_k$ (the largest overlap the bodies would have without
 //! deformation; positive whenever they touch). The solve stops when all three are at most
 //! the relative tolerance $\varepsilon$:
@@ -74,6 +75,10 @@
 //! * Displacement control with $\delta \le \min_k g^0_k$ (the gap never closes): zero load,
 //!   no contact, [`NormalSolution::no_contact`] set — a result, not an error.
 //! * Full contact (every cell, e.g. a periodic surface pressed flat) is a result.
+//! * [`Boundary::Periodic`] under displacement control needs $\delta$ below the mean initial
+//!   gap: a uniform pressure does not move a periodic surface relative to its mean, so at
+//!   $\delta \ge \overline{g^0}$ (full contact) the force is unbounded; such an approach is
+//!   refused ([`Error::OutOfDomain`], named "approach"); use force control there.
 //! * A contact on fewer than [`NormalProblem::with_min_contact_cells`] cells
 //!   (default [`DEFAULT_MIN_CONTACT_CELLS`]) is refused with [`Error::UnresolvedContact`].
 //! * [`NormalSolution::touches_boundary`] says whether, under [`Boundary::Free`], the contact
@@ -99,7 +104,7 @@ pub const DEFAULT_MIN_CONTACT_CELLS: usize = 12;
 
 /// At most this many clipped or re-entered cells per step are corrected by adding kernel
 /// columns directly ($O(N)$ each) instead of one more FFT product.
-const DIRECT_CHANGES: usize = 16;
+const DIRECT_CHANGES: usize = 32;
 
 /// The incrementally updated $u = Kp$ is recomputed by a full product this often (and before
 /// every certified stop).
@@ -251,6 +256,8 @@ pub struct NormalOperator {
     /// offsets $(|d_i|, |d_j|)$; periodic: at offsets modulo the period).
     column: Vec<f64>,
     periodic: bool,
+    /// What it was planned for: cell sides and $c_1$ of the two bodies.
+    planned: (f64, f64, f64),
     setup_seconds: f64,
 }
 
@@ -286,15 +293,15 @@ impl NormalOperator {
                         }
                     },
                 );
-                // Self-term of the periodic kernel: the mean of the transfer.
-                let cell = Rect { x1: -0.5 * hx, x2: 0.5 * hx, y1: -0.5 * hy, y2: 0.5 * hy };
-                (conv, pressure_uz(&c, &cell, 0.0, 0.0))
+                (conv, 0.0)
             }
         };
         let mut column = vec![0.0; nx * ny];
         let mut unit = vec![0.0; nx * ny];
         unit[0] = 1.0;
         conv.apply_scalar(&unit, &mut column, &mut conv.make_scalar_scratch());
+        // Periodic: the self-term is the kernel's own (free: the exact rectangle value).
+        let self_term = if problem.boundary == Boundary::Periodic { column[0] } else { self_term };
         Self {
             conv,
             nx,
@@ -302,6 +309,7 @@ impl NormalOperator {
             self_term,
             column,
             periodic: problem.boundary == Boundary::Periodic,
+            planned: (hx, hy, c.one_minus_nu),
             setup_seconds: t0.elapsed().as_secs_f64(),
         }
     }
@@ -482,7 +490,8 @@ impl<'a> NormalProblem<'a> {
     ///
     /// # Errors
     /// [`Error::ToleranceOutOfRange`]; [`Error::OutOfDomain`] for a force that is not finite
-    /// and $> 0$ or a non-finite approach; [`Error::LengthMismatch`] for an operator or warm
+    /// and $> 0$, a non-finite approach, (periodic) an approach at or above the mean
+    /// initial gap, or an operator planned for other cells, boundary or bodies; [`Error::LengthMismatch`] for an operator or warm
     /// start of another lattice; [`Error::NotConverged`] with the residual reached;
     /// [`Error::UnresolvedContact`] for a contact on fewer cells than the minimum.
     pub fn solve_with(
@@ -498,6 +507,16 @@ impl<'a> NormalProblem<'a> {
                 name: "operator lattice",
                 expected: n,
                 got: op.nx * op.ny,
+            });
+        }
+        let c1 = Compliance::pair(&self.bodies[0], &self.bodies[1]).one_minus_nu;
+        if op.periodic != (self.boundary == Boundary::Periodic)
+            || op.planned != (self.hx, self.hy, c1)
+        {
+            return Err(Error::OutOfDomain {
+                name: "operator",
+                value: f64::NAN,
+                allowed: "planned by NormalOperator::new for this lattice, boundary and bodies",
             });
         }
         let force = match load {
@@ -527,6 +546,17 @@ impl<'a> NormalProblem<'a> {
         let g0 = self.gap;
         let gmin = g0.iter().copied().fold(f64::INFINITY, f64::min);
 
+        if let (NormalLoad::Approach(d), Boundary::Periodic) = (load, self.boundary) {
+            let mean = g0.iter().sum::<f64>() / n as f64;
+            if d >= mean {
+                return Err(Error::OutOfDomain {
+                    name: "approach",
+                    value: d,
+                    allowed: "below the mean initial gap for a periodic surface (full contact: \
+                              unbounded force under displacement control; use force control)",
+                });
+            }
+        }
         // Displacement control where the gap never closes: zero load, said so.
         if let NormalLoad::Approach(d) = load {
             if d <= gmin {

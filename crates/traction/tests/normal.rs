@@ -114,6 +114,36 @@ fn hertz_sphere_128_across() {
     assert!(ed.abs() <= tol::HERTZ_APPROACH, "approach {ed}");
 }
 
+/// Non-square cells (hx = 2 hy): the rectangle kernel takes them as they are. Hertz sphere
+/// with 64 cells across along x and 128 along y.
+#[test]
+fn hertz_sphere_rectangular_cells() {
+    let (m, r, a) = (steel(), 0.01, 1e-4);
+    let es = composite_modulus(&m, &m);
+    let p = 4.0 * es * a * a * a / (3.0 * r);
+    let (hx, hy) = (2.0 * a / 64.0, 2.0 * a / 128.0);
+    let (nx, ny) = (84usize, 164usize);
+    let g0: Vec<f64> = (0..nx * ny)
+        .map(|k| {
+            let x = ((k % nx) as f64 + 0.5 - 0.5 * nx as f64) * hx;
+            let y = ((k / nx) as f64 + 0.5 - 0.5 * ny as f64) * hy;
+            (x * x + y * y) / (2.0 * r)
+        })
+        .collect();
+    let s = NormalProblem::new(nx, ny, (hx, hy), &g0, [m, m], Boundary::Free)
+        .unwrap()
+        .solve(NormalLoad::Force(p))
+        .unwrap();
+    let ea = ((s.area / PI).sqrt() - a) / hx;
+    let ep = s.peak_pressure / (3.0 * p / (2.0 * PI * a * a)) - 1.0;
+    let ed = s.approach / (a * a / r) - 1.0;
+    println!(
+        "hertz on hx = 2 hy cells: a {ea:+.3} cells (hx), p0 {ep:+.2e}, approach {ed:+.2e} ({} it)",
+        s.info.iterations
+    );
+    assert!(ea.abs() <= 1.0 && ep.abs() <= tol::HERTZ_P0 && ed.abs() <= tol::HERTZ_APPROACH);
+}
+
 /// Hertz ellipse (R'x = 10 mm, R'y = 30 mm) with 128 cells across the major axis: the
 /// semi-axes from the outermost contact cells, the peak pressure and the approach against
 /// `HertzEllipse` (Johnson §3.4, elliptic integrals).
@@ -469,6 +499,21 @@ fn force_and_displacement_control_agree() {
     let ef = d.force / f.force - 1.0;
     println!("periodic force vs displacement control: pressure {e:.1e}, force {ef:+.1e}");
     assert!(e <= tol::CONTROL && ef.abs() <= tol::CONTROL);
+    // Periodic full contact under displacement control has no finite force: refused.
+    let mean = g0.iter().sum::<f64>() / g0.len() as f64;
+    assert!(matches!(
+        NormalProblem::new(
+            256,
+            4,
+            (f.hx, f.hy),
+            &g0,
+            [steel(), Material::rigid()],
+            Boundary::Periodic
+        )
+        .unwrap()
+        .solve(NormalLoad::Approach(mean)),
+        Err(Error::OutOfDomain { name: "approach", .. })
+    ));
 }
 
 #[test]
