@@ -100,7 +100,7 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)
             }
             files.push(("surface.csv".to_string(), std::mem::take(&mut s)));
         }
-        SurfaceOut::Grid { x, y, p, qx, qy, stick } if !x.is_empty() => {
+        SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } if !x.is_empty() => {
             s.push_str("x_m,y_m,p_Pa,qx_Pa,qy_Pa,stick\n");
             for (i, xi) in x.iter().enumerate() {
                 for (j, yj) in y.iter().enumerate() {

@@ -347,7 +347,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 ));
             }
         }
-        SurfaceOut::Grid { x, y, p, qx, qy, stick } if !x.is_empty() && !y.is_empty() => {
+        SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } if !x.is_empty() && !y.is_empty() => {
             // fields are [j][i]; the grid is [i][j]: transpose for the heat map
             let tr = |m: &Vec<Vec<f64>>| -> Vec<Vec<f64>> {
                 (0..y.len()).map(|j| (0..x.len()).map(|i| m[i][j]).collect()).collect()

@@ -37,6 +37,46 @@ pub(crate) struct RawGeometry {
     pub radii: Option<Spanned<Vec<SQty>>>,
     pub half_width: Option<SQty>,
     pub patches: Option<Spanned<Vec<Spanned<RawPatch>>>>,
+    pub boundary: Option<Spanned<String>>,
+    pub size: Option<Spanned<Vec<SQty>>>,
+    pub cells: Option<Spanned<Vec<f64>>>,
+    pub profile: Option<Spanned<RawProfile>>,
+    pub roughness: Option<Spanned<RawRoughness>>,
+}
+
+// The crowned cylinder's keys (length, crown, end_radius) are part of the format and are
+// refused by the reader until that profile is solved.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(dead_code)]
+pub(crate) struct RawProfile {
+    pub shape: Spanned<String>,
+    pub radius: Option<SQty>,
+    pub radii: Option<Spanned<Vec<SQty>>>,
+    pub edge_radius: Option<SQty>,
+    pub wavelength: Option<SQty>,
+    pub amplitude: Option<SQty>,
+    pub along: Option<Spanned<String>>,
+    pub length: Option<SQty>,
+    pub crown: Option<SQty>,
+    pub end_radius: Option<SQty>,
+}
+
+// Generated roughness's keys (hurst, rms_height, ...) are part of the format and are refused
+// by the reader until generation is implemented.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(dead_code)]
+pub(crate) struct RawRoughness {
+    pub file: Option<Spanned<String>>,
+    pub unit: Option<Spanned<String>>,
+    pub hurst: Option<Spanned<f64>>,
+    pub rms_height: Option<SQty>,
+    pub rms_slope: Option<Spanned<f64>>,
+    pub k_low: Option<Spanned<f64>>,
+    pub k_rolloff: Option<Spanned<f64>>,
+    pub k_high: Option<Spanned<f64>>,
+    pub seed: Option<Spanned<i64>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -75,6 +115,7 @@ pub(crate) struct RawIndenter {
 pub(crate) struct RawLoad {
     pub normal: Option<SQty>,
     pub half_width: Option<SQty>,
+    pub approach: Option<SQty>,
     pub tangential: Option<SQty>,
     pub direction_deg: Option<Spanned<f64>>,
     pub friction: Option<Spanned<f64>>,

@@ -28,7 +28,7 @@ fn line(out: &Outcome) -> Arrays<'_> {
 
 /// Resultant of a grid traction: (sum qx dA, sum qy dA, moment about the origin).
 fn grid_resultant(out: &Outcome) -> (f64, f64, f64, f64) {
-    let SurfaceOut::Grid { x, y, p, qx, qy, stick } = &out.surface else { panic!("grid") };
+    let SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } = &out.surface else { panic!("grid") };
     let (hx, hy) = (x[1] - x[0], y[1] - y[0]);
     let (mut fx, mut fy, mut m, mut worst_cone) = (0.0, 0.0, 0.0, 0.0f64);
     let f = out.forces.normal; // placeholder to keep signature simple
@@ -51,7 +51,7 @@ fn grid_resultant(out: &Outcome) -> (f64, f64, f64, f64) {
 
 /// The friction cone |q| <= f p on every element, relative to f p_max.
 fn cone_violation(out: &Outcome, f: f64) -> f64 {
-    let SurfaceOut::Grid { x, y, p, qx, qy, stick } = &out.surface else { panic!("grid") };
+    let SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } = &out.surface else { panic!("grid") };
     let pmax = p.iter().flatten().fold(0.0f64, |a, b| a.max(*b));
     let mut worst = 0.0f64;
     for i in 0..x.len() {
@@ -403,6 +403,18 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             let t = v.max.max_principal;
             assert!(t.value > 0.0 && t.x < -0.8 * c.a && t.x > -1.2 * c.a, "{t:?}");
             assert!(out.audit.passed);
+        }
+        "sphere_as_surface.toml" => {
+            // The normal solve on the lattice against Hertz (a within one cell, p0 1 %,
+            // approach 0.5 %), then the fast solver's partial slip on that contact.
+            let e_star: f64 = 210e9 / (2.0 * (1.0 - 0.09));
+            let (p, r): (f64, f64) = (10.0, 0.01);
+            let a = (3.0 * p * r / (4.0 * e_star)).cbrt();
+            let h = 0.8e-3 / 128.0;
+            assert!((c.a - a).abs() <= h, "a {} vs {a}", c.a);
+            expect("p0 (Hertz)", c.p0, 3.0 * p / (2.0 * PI * a * a), 0.01);
+            expect("approach (Hertz)", c.indentation.unwrap(), a * a / r, 0.005);
+            assert!(out.zones.grid.unwrap().stick > 0 && out.audit.passed);
         }
         other => panic!("no check for scene {other}: add one"),
     }

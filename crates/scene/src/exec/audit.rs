@@ -117,7 +117,7 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
                 "max over the surface points of (|q| - f p)/(f p0)",
             );
         }
-        SurfaceOut::Grid { x, y, p, qx, qy, stick } if !x.is_empty() => {
+        SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } if !x.is_empty() => {
             let (mut worst, mut stick_outside) = (f64::NEG_INFINITY, 0usize);
             let (mut sp, mut sx, mut sy, mut spx, mut spy) = (0.0, 0.0, 0.0, 0.0, 0.0);
             for i in 0..x.len() {

@@ -46,7 +46,8 @@ impl Lattice {
             .then_some((i as usize, j as usize))
     }
 
-    pub fn into_surface(self) -> SurfaceOut {
+    /// The lattice arrays as result.json's `surface`, with a surface's gap map.
+    pub fn into_surface(self, gap: Option<Vec<Vec<f64>>>) -> SurfaceOut {
         SurfaceOut::Grid {
             x: self.x,
             y: self.y,
@@ -54,6 +55,7 @@ impl Lattice {
             qx: self.qx,
             qy: self.qy,
             stick: self.stick,
+            gap,
         }
     }
 }

@@ -231,6 +231,8 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
             p0: n.p0,
             indentation: n.indentation,
             normal_load: n.load,
+            area: None,
+            fraction: None,
         },
         zones: t.zones(n.a, r.friction.is_some(), n.friction_possible),
         forces: Forces {
@@ -281,6 +283,8 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
             p0: n.p0,
             indentation: n.indentation,
             normal_load: n.load,
+            area: n.surface.as_ref().map(|s| s.area),
+            fraction: n.surface.as_ref().map(|s| s.fraction),
         },
         zones: t.zones,
         forces: Forces {
@@ -291,9 +295,9 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         },
         rigid: t.rigid,
         surface: if r.lattice_output {
-            lat.into_surface()
+            lat.into_surface(n.surface.map(|s| s.gap))
         } else {
-            lattice::Lattice::empty().into_surface()
+            lattice::Lattice::empty().into_surface(None)
         },
         field,
         rolling: None,

@@ -6,13 +6,16 @@ use std::f64::consts::PI;
 use stickslip_graded::{GradedMaterial, RigidCylinder};
 use stickslip_halfspace::hertz::{HertzEllipse, HertzLine, HertzSphere};
 use stickslip_halfspace::material::composite_modulus;
-use stickslip_traction::ContactGrid;
+use stickslip_traction::{
+    Boundary, ContactGrid, NormalLoad as TNormalLoad, NormalProblem, Tolerance,
+};
 
 use super::lattice::{self, Lattice};
 use super::{solver_err, Ctx};
+use crate::error::ErrorKind;
 use crate::error::SceneError;
-use crate::plan::recipe::{ContactNormal, ContactRecipe, LineLoad, LineNormal};
-use crate::scene::{patch_bounds, Patch};
+use crate::plan::recipe::{ContactNormal, ContactRecipe, LineLoad, LineNormal, SurfaceLoad};
+use crate::scene::{patch_bounds, Patch, SurfaceBoundary};
 
 /// The normal solution of a line contact.
 #[derive(Debug, Clone, Copy)]
@@ -129,48 +132,64 @@ pub(crate) struct ContactSolution {
     pub grid: ContactGrid,
     /// The lattice over the contact, pressure filled, every contact element marked stick.
     pub lattice: Lattice,
+    /// A surface's contact area (m^2), fraction of the lattice in contact and gap map
+    /// (`gap[i][j]`, m); None for closed forms and patches.
+    pub surface: Option<SurfaceContact>,
+}
+
+/// What the normal solve of a surface adds.
+#[derive(Debug, Clone)]
+pub(crate) struct SurfaceContact {
+    pub area: f64,
+    pub fraction: f64,
+    pub gap: Vec<Vec<f64>>,
 }
 
 /// The normal contact of a 3D recipe, and the lattice of `r.grid` elements per side.
 pub(crate) fn contact(r: &ContactRecipe, cx: &mut Ctx<'_>) -> Result<ContactSolution, SceneError> {
     let n = r.grid;
-    let (ax, ay, p0, load, indentation) = match &r.normal {
+    // (semi-axes, peak pressure, load, approach) and the grid with its lattice corner and size
+    let ((ax, ay, p0, load, indentation), (grid, x0, y0, nx, ny)) = match &r.normal {
+        ContactNormal::Surface { surface, load, tolerance } => {
+            return surface_contact(surface, *load, *tolerance, r, cx);
+        }
         ContactNormal::Sphere { radius, force, e_star } => {
             let h = HertzSphere::new(*force, *radius, *e_star)
                 .map_err(|e| solver_err("Hertz sphere", e))?;
-            (h.contact_radius(), h.contact_radius(), h.max_pressure(), *force, Some(h.approach()))
+            let a = h.contact_radius();
+            (
+                (a, a, h.max_pressure(), *force, Some(h.approach())),
+                (ContactGrid::hertz_circle(a, *force, n), -a, -a, n, n),
+            )
         }
         ContactNormal::Ellipse { rx, ry, force, e_star } => {
             let h = HertzEllipse::new(*rx, *ry, *force, *e_star)
                 .map_err(|e| solver_err("Hertz ellipse", e))?;
-            (h.semi_axis_x(), h.semi_axis_y(), h.max_pressure(), *force, Some(h.approach()))
+            let (a, b) = (h.semi_axis_x(), h.semi_axis_y());
+            (
+                (a, b, h.max_pressure(), *force, Some(h.approach())),
+                (ContactGrid::hertz_ellipse(a, b, *force, n, n), -a, -b, n, n),
+            )
         }
-        ContactNormal::EllipseGiven { a, b, force } => {
-            (*a, *b, 3.0 * force / (2.0 * PI * a * b), *force, None)
-        }
+        ContactNormal::EllipseGiven { a, b, force } => (
+            (*a, *b, 3.0 * force / (2.0 * PI * a * b), *force, None),
+            (ContactGrid::hertz_ellipse(*a, *b, *force, n, n), -a, -b, n, n),
+        ),
         ContactNormal::Patches(ps) => {
             let (lo, hi) = patch_bounds(ps);
             let pmax = ps.iter().map(|p| p.pressure).fold(0.0, f64::max);
             let p: f64 = ps.iter().map(Patch::force).sum();
-            (0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]), pmax, p, None)
-        }
-    };
-    cx.ev.normal_contact += 1;
-
-    let (grid, x0, y0, nx, ny) = match &r.normal {
-        ContactNormal::Sphere { .. } => (ContactGrid::hertz_circle(ax, load, n), -ax, -ay, n, n),
-        ContactNormal::Ellipse { .. } | ContactNormal::EllipseGiven { .. } => {
-            (ContactGrid::hertz_ellipse(ax, ay, load, n, n), -ax, -ay, n, n)
-        }
-        ContactNormal::Patches(ps) => {
-            let (lo, hi) = patch_bounds(ps);
             let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
             let grid = ContactGrid::from_patches(h, h, (lo[0], lo[1]), &lattice::grid_patches(ps));
             let nx = ((hi[0] - lo[0]) / h).round() as usize;
             let ny = ((hi[1] - lo[1]) / h).round() as usize;
-            (grid, lo[0], lo[1], nx, ny)
+            (
+                (0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]), pmax, p, None),
+                (grid, lo[0], lo[1], nx, ny),
+            )
         }
     };
+    cx.ev.normal_contact += 1;
     let grid = grid.map_err(|e| solver_err("contact grid", e))?;
     let mut lat = Lattice::new(x0, y0, grid.hx, grid.hy, nx.max(1), ny.max(1));
     for kk in 0..grid.len() {
@@ -180,5 +199,113 @@ pub(crate) fn contact(r: &ContactRecipe, cx: &mut Ctx<'_>) -> Result<ContactSolu
         }
     }
     cx.ev.normal_contact += grid.len() as u64;
-    Ok(ContactSolution { ax, ay, p0, load, indentation, grid, lattice: lat })
+    Ok(ContactSolution { ax, ay, p0, load, indentation, grid, lattice: lat, surface: None })
+}
+
+/// The normal contact of a surface: its initial gap (profile plus roughness) on the lattice,
+/// solved by the normal-contact solver under force or displacement control.
+fn surface_contact(
+    s: &crate::scene::Surface,
+    load: SurfaceLoad,
+    tolerance: f64,
+    r: &ContactRecipe,
+    cx: &mut Ctx<'_>,
+) -> Result<ContactSolution, SceneError> {
+    let [nx, ny] = s.cells;
+    let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
+    let (x0, y0) = (-0.5 * s.size[0], -0.5 * s.size[1]);
+    let mut gap = Vec::with_capacity(nx * ny);
+    for j in 0..ny {
+        for i in 0..nx {
+            let (x, y) = (x0 + (i as f64 + 0.5) * hx, y0 + (j as f64 + 0.5) * hy);
+            let h = s.roughness.as_ref().map_or(0.0, |h| h[j * nx + i]);
+            gap.push(s.profile.gap(x, y) - h);
+        }
+    }
+    let boundary = match s.boundary {
+        SurfaceBoundary::Free => Boundary::Free,
+        SurfaceBoundary::Periodic => Boundary::Periodic,
+    };
+    let tol = Tolerance::relative(tolerance).map_err(|e| solver_err("tolerance", e))?;
+    let problem = NormalProblem::new(nx, ny, (hx, hy), &gap, r.bodies, boundary)
+        .map_err(surface_err)?
+        .with_tolerance(tol);
+    cx.progress("normal contact", 0, 1);
+    let sol = problem
+        .solve(match load {
+            SurfaceLoad::Force(p) => TNormalLoad::Force(p),
+            SurfaceLoad::Approach(d) => TNormalLoad::Approach(d),
+        })
+        .map_err(surface_err)?;
+    cx.progress("normal contact", 1, 1);
+    if sol.no_contact {
+        return Err(SceneError::new(
+            ErrorKind::Impossible,
+            format!(
+                "the approach {:.3e} m does not close the gap: zero load, no contact",
+                sol.approach
+            ),
+        )
+        .key("load.approach")
+        .hint("raise load.approach above the smallest initial gap, or give load.normal"));
+    }
+    cx.ev.normal_contact += (nx * ny) as u64;
+    cx.notes.push(format!(
+        "normal contact of the surface: {} x {} cells, {} in contact ({:.4} of the lattice{}); {} iterations, {} FFT products; residuals gap {:.2e}, complementarity {:.2e}, force {:.2e} (tolerance {:.1e})",
+        nx,
+        ny,
+        sol.contact_cells,
+        sol.fraction,
+        if sol.touches_boundary { "; the contact reaches the lattice edge, which truncates the surface" } else { "" },
+        sol.info.iterations,
+        sol.info.products,
+        sol.info.gap_residual,
+        sol.info.complementarity_residual,
+        sol.info.force_residual,
+        tolerance
+    ));
+    let grid = sol.contact_grid().map_err(surface_err)?;
+    let mut lat = Lattice::new(x0, y0, hx, hy, nx, ny);
+    // gap[i][j] at (x[i], y[j]) from the solver's row-major j * nx + i
+    let gaps: Vec<Vec<f64>> =
+        (0..nx).map(|i| (0..ny).map(|j| sol.gap[j * nx + i]).collect()).collect();
+    let (mut xmax, mut ymax) = (0.0f64, 0.0f64);
+    for k in 0..nx * ny {
+        let (i, j) = (k % nx, k / nx);
+        if sol.contact[k] {
+            lat.p[i][j] = sol.pressure[k];
+            lat.stick[i][j] = 1;
+            xmax = xmax.max(lat.x[i].abs() + 0.5 * hx);
+            ymax = ymax.max(lat.y[j].abs() + 0.5 * hy);
+        }
+    }
+    Ok(ContactSolution {
+        ax: xmax,
+        ay: ymax,
+        p0: sol.peak_pressure,
+        load: sol.force,
+        indentation: Some(sol.approach),
+        grid,
+        lattice: lat,
+        surface: Some(SurfaceContact { area: sol.area, fraction: sol.fraction, gap: gaps }),
+    })
+}
+
+/// A normal-solver error as a scene error, by its variant.
+fn surface_err(e: stickslip_traction::Error) -> SceneError {
+    use stickslip_traction::Error as E;
+    match &e {
+        E::UnresolvedContact { minimum, .. } => SceneError::new(
+            ErrorKind::Solver,
+            format!("the contact is not resolved by the lattice: {e}"),
+        )
+        .key("geometry.cells")
+        .hint(format!("use more cells (at least {minimum} must be in contact), or a smaller size, or a larger load")),
+        E::NotConverged { .. } | E::ToleranceOutOfRange { .. } => {
+            SceneError::new(ErrorKind::Solver, format!("normal-contact solver: {e}"))
+                .key("solver.tolerance")
+                .hint("raise solver.tolerance (e.g. 1e-8)")
+        }
+        _ => solver_err("normal-contact solver", e),
+    }
 }

@@ -95,6 +95,12 @@ pub struct ContactOut {
     pub indentation: Option<f64>,
     /// Normal load (N/m in 2D, N in 3D).
     pub normal_load: f64,
+    /// Contact area of a surface (m^2); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub area: Option<f64>,
+    /// Fraction of a surface's lattice in contact; absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fraction: Option<f64>,
 }
 
 /// `zones` in result.json.
@@ -195,6 +201,9 @@ pub enum SurfaceOut {
         qy: Vec<Vec<f64>>,
         /// 1 stick, 0 slip, -1 outside the contact.
         stick: Vec<Vec<i8>>,
+        /// A surface's gap after loading (m), every cell; absent otherwise.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        gap: Option<Vec<Vec<f64>>>,
     },
 }
 

@@ -114,7 +114,15 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
     cx.notes.push("rolling: the cylinder moves in +x, the contact is (-a, b) with the trailing edge at -a; q is Goryacheva's tau_xy on the base (FORMULAS.md D); surface displacements are not computed for rolling".to_string());
     let l = rear + front;
     Ok(Parts {
-        contact: ContactOut { a: rear, b: front, p0, indentation: None, normal_load: load },
+        contact: ContactOut {
+            a: rear,
+            b: front,
+            p0,
+            indentation: None,
+            normal_load: load,
+            area: None,
+            fraction: None,
+        },
         zones,
         forces: Forces { normal: load, tangential: q, moment: 0.0, rolling_moment: mstar },
         rigid: RigidOut { tangential: None, rotation: None, per_body: None },

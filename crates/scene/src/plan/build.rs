@@ -9,20 +9,20 @@ use stickslip_halfspace::hertz::HertzSphere;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
 use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
-use stickslip_traction::{FastConfig, ModifiedLp};
+use stickslip_traction::{FastConfig, ModifiedLp, NormalProblem};
 
 use super::checks::{self, invalid, tolerance_for};
 use super::cost::{self, lattice_elements};
 use super::recipe::{
     ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, CycleRecipe, Force, GridMethod,
     GridStep, LineDisplacements, LineField, LineFieldMethod, LineFriction, LineLoad, LineNormal,
-    LineRecipe, LineSurface, Recipe, RollingModel, RollingRecipe, Tangential,
+    LineRecipe, LineSurface, Recipe, RollingModel, RollingRecipe, SurfaceLoad, Tangential,
 };
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
 use crate::error::ErrorKind;
 use crate::scene::{
     Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Method, Motion, NormalLoad, Patch,
-    Scene, Substrate,
+    Scene, Substrate, Surface, SurfaceBoundary,
 };
 
 /// Plan `scene`: refuse what no solver handles, choose the method of every stage, explain
@@ -62,6 +62,10 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
         }
         (Geometry::Patches(ps), Motion::Static) => {
             let (r, reason) = contact_recipe(scene, ContactBody::Patches(ps))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+        (Geometry::Surface(s), Motion::Static) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Surface(s))?;
             (Recipe::Contact(r), Some(reason))
         }
     };
@@ -141,6 +145,15 @@ pub(crate) fn along_axis(deg: f64) -> bool {
     r.min(90.0 - r) < 1e-9
 }
 
+fn approach_refused() -> Issue {
+    Issue::new(
+        ErrorKind::Schema,
+        "load.approach",
+        "the approach (displacement control) is for geometry.kind = \"surface\"",
+    )
+    .hint("give load.normal = P")
+}
+
 fn half_width_refused() -> Issue {
     Issue::new(
         ErrorKind::Schema,
@@ -170,6 +183,7 @@ fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
     let line_load = match l.normal {
         NormalLoad::HalfWidth(a) => LineLoad::HalfWidth(a),
         NormalLoad::Force(p) | NormalLoad::FromPatches(p) => LineLoad::Force(p),
+        NormalLoad::Approach(_) => return Err(approach_refused()),
     };
     let graded_material = match scene.substrate {
         Substrate::Graded { e0, k, nu } if k > 0.0 => {
@@ -329,6 +343,7 @@ enum ContactBody<'a> {
     Sphere(f64),
     Ellipsoid(Ellipse),
     Patches(&'a [Patch]),
+    Surface(&'a Surface),
 }
 
 fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe, String), Issue> {
@@ -339,12 +354,14 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     let force_of = || match l.normal {
         NormalLoad::Force(p) | NormalLoad::FromPatches(p) => Ok(p),
         NormalLoad::HalfWidth(_) => Err(half_width_refused()),
+        NormalLoad::Approach(_) => Err(approach_refused()),
     };
     let normal = match body {
         ContactBody::Sphere(radius) => {
             let force = match l.normal {
                 NormalLoad::Force(p) | NormalLoad::FromPatches(p) => p,
                 NormalLoad::HalfWidth(a) => HertzSphere::load_for_contact_radius(a, radius, e_star),
+                NormalLoad::Approach(_) => return Err(approach_refused()),
             };
             ContactNormal::Sphere { radius, force, e_star }
         }
@@ -355,6 +372,25 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             ContactNormal::EllipseGiven { a, b, force: force_of()? }
         }
         ContactBody::Patches(ps) => ContactNormal::Patches(ps.to_vec()),
+        ContactBody::Surface(s) => {
+            let load = match l.normal {
+                NormalLoad::Approach(d) => SurfaceLoad::Approach(d),
+                NormalLoad::HalfWidth(_) => return Err(half_width_refused()),
+                NormalLoad::Force(p) | NormalLoad::FromPatches(p) => SurfaceLoad::Force(p),
+            };
+            if s.boundary == SurfaceBoundary::Periodic
+                && (l.tangential != 0.0 || l.moment != 0.0 || l.sliding)
+            {
+                return Err(checks::unsupported(
+                    "geometry.boundary",
+                    "tangential loads on a periodic surface are not solved in this version (the grid solvers are free-boundary)",
+                    "use boundary = \"free\", or remove the tangential load",
+                ));
+            }
+            let tolerance =
+                tolerance_for(scene, "the normal-contact solver", NormalProblem::TOLERANCE_RANGE)?;
+            ContactNormal::Surface { surface: Box::new(s.clone()), load, tolerance }
+        }
     };
     let method = scene.solver.method;
     let both = l.tangential != 0.0 && l.moment != 0.0;
@@ -470,6 +506,7 @@ fn field_box(scene: &Scene, normal: &ContactNormal, grid: FieldGrid) -> Result<(
             let (lo, hi) = crate::scene::patch_bounds(ps);
             (0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]))
         }
+        ContactNormal::Surface { surface, .. } => (0.5 * surface.size[0], 0.5 * surface.size[1]),
     };
     let unit = match grid.scale {
         FieldScale::HalfWidth => ax,
@@ -515,6 +552,7 @@ impl Recipe {
                 ContactNormal::Ellipse { .. } => Technique::HertzEllipse,
                 ContactNormal::EllipseGiven { .. } => Technique::EllipseGiven,
                 ContactNormal::Patches(_) => Technique::PatchPressure,
+                ContactNormal::Surface { .. } => Technique::SurfaceContact,
             },
         }
     }

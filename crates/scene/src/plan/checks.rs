@@ -165,6 +165,7 @@ fn implied_load(scene: &Scene) -> Option<f64> {
     let a = match scene.load.normal {
         NormalLoad::HalfWidth(a) => a,
         NormalLoad::Force(p) | NormalLoad::FromPatches(p) => return Some(p),
+        NormalLoad::Approach(_) => return None,
     };
     let sub = substrate_material(&scene.substrate).ok()?;
     let ind = indenter_material(scene, &sub).ok()?;

@@ -119,6 +119,9 @@ pub enum Technique {
     EllipseGiven,
     /// Uniform pressure on each patch as given.
     PatchPressure,
+    /// Normal contact of any surface on a lattice by constrained conjugate gradients
+    /// (Polonsky & Keer 1999): `stickslip_traction::NormalProblem`.
+    SurfaceContact,
     /// Full sliding, $q = f p$.
     Sliding,
     /// 2D Cattaneo–Mindlin (FORMULAS.md C): `stickslip_halfspace::cattaneo2d::Cattaneo2d`.
@@ -165,7 +168,7 @@ pub enum Technique {
 
 impl Technique {
     /// Every technique, in the order of declaration.
-    pub const ALL: [Technique; 24] = [
+    pub const ALL: [Technique; 25] = [
         Technique::HertzLine,
         Technique::GradedCylinder,
         Technique::FlatPunch,
@@ -190,6 +193,7 @@ impl Technique {
         Technique::StressQuadrature,
         Technique::HertzSphereField,
         Technique::LatticeField,
+        Technique::SurfaceContact,
     ];
 
     /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
@@ -220,6 +224,7 @@ impl Technique {
             Technique::StressQuadrature => 21,
             Technique::HertzSphereField => 22,
             Technique::LatticeField => 23,
+            Technique::SurfaceContact => 24,
         }
     }
 
@@ -235,6 +240,7 @@ impl Technique {
                 | Technique::GradedKernels
                 | Technique::StressQuadrature
                 | Technique::LatticeField
+                | Technique::SurfaceContact
         )
     }
 
@@ -250,6 +256,9 @@ impl Technique {
             Technique::HertzEllipse => "Hertz ellipse from the relative radii (Johnson 4.2)",
             Technique::EllipseGiven => "Hertz pressure on the given semi-axes, p0 = 3P/(2 pi a b)",
             Technique::PatchPressure => "uniform pressure on each patch, as given",
+            Technique::SurfaceContact => {
+                "normal contact of the surface on its lattice, constrained conjugate gradients with FFT products (Polonsky-Keer), numerical"
+            }
             Technique::Sliding => "full sliding, q = f p",
             Technique::Cattaneo2d => "2D Cattaneo-Mindlin, c/a = sqrt(1 - Q/fP) (FORMULAS.md C)",
             Technique::GradedPartialSlip => {

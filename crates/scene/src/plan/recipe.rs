@@ -272,6 +272,24 @@ pub enum ContactNormal {
     },
     /// Uniform pressure on each patch.
     Patches(Vec<Patch>),
+    /// Any surface: the normal-contact solver on its lattice.
+    Surface {
+        /// The surface.
+        surface: Box<crate::scene::Surface>,
+        /// Force or approach.
+        load: SurfaceLoad,
+        /// Relative tolerance of the solver.
+        tolerance: f64,
+    },
+}
+
+/// How a surface is loaded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SurfaceLoad {
+    /// The normal force (N).
+    Force(f64),
+    /// The approach of the two bodies (m).
+    Approach(f64),
 }
 
 /// The tangential step of a 3D contact.

@@ -8,6 +8,7 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 
 mod builder;
+mod heights;
 mod read;
 pub(crate) mod validate;
 
@@ -38,6 +39,95 @@ pub enum Geometry {
     },
     /// Flat patches with given uniform pressures (3D), e.g. a bolted joint's contact areas.
     Patches(Vec<Patch>),
+    /// Any surface: the initial gap on a lattice from a profile and roughness (3D); the
+    /// pressure follows from the normal-contact solver.
+    Surface(Surface),
+}
+
+/// A surface given on a lattice.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Surface {
+    /// Free (an isolated contact) or periodic (the lattice is one period).
+    pub boundary: SurfaceBoundary,
+    /// Lattice extent along x and y (m).
+    pub size: [f64; 2],
+    /// Cells along x and y.
+    pub cells: [usize; 2],
+    /// The profile of the gap.
+    pub profile: Profile,
+    /// Roughness heights (m, positive towards the other body), row by row in y
+    /// (index `j * nx + i`), added to the profile; None for a smooth surface.
+    pub roughness: Option<Vec<f64>>,
+}
+
+/// Lateral boundary of a surface lattice.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SurfaceBoundary {
+    /// An isolated contact: no periodic images.
+    Free,
+    /// The lattice is one period of a periodic surface.
+    Periodic,
+}
+
+/// The smooth part of a surface's initial gap, centred on the lattice.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Profile {
+    /// A sphere (relative radius R): $g = r^2/(2R)$.
+    Sphere {
+        /// Radius (m).
+        radius: f64,
+    },
+    /// An ellipsoid (relative radii in x and y): $g = x^2/(2R_x) + y^2/(2R_y)$.
+    Ellipsoid {
+        /// Radii (m).
+        radii: [f64; 2],
+    },
+    /// A flat circular punch with a rounded edge: $g = 0$ for $r \le$ `radius`, then the
+    /// parabolic edge $(r - \text{radius})^2/(2\rho)$.
+    Punch {
+        /// Radius of the flat face (m).
+        radius: f64,
+        /// Edge radius $\rho$ (m).
+        edge_radius: f64,
+    },
+    /// A wave of amplitude $\Delta$: $g = \Delta(1-\cos 2\pi x/\lambda)$ along x, or the
+    /// sum of that in x and in y.
+    Wavy {
+        /// Wavelength (m).
+        wavelength: f64,
+        /// Amplitude (m).
+        amplitude: f64,
+        /// True for waves in x and y.
+        along_xy: bool,
+    },
+    /// A flat surface (roughness only).
+    Flat,
+}
+
+impl Profile {
+    /// The gap of the profile at (x, y) (m).
+    pub fn gap(&self, x: f64, y: f64) -> f64 {
+        use std::f64::consts::PI;
+        match *self {
+            Profile::Sphere { radius } => (x * x + y * y) / (2.0 * radius),
+            Profile::Ellipsoid { radii } => x * x / (2.0 * radii[0]) + y * y / (2.0 * radii[1]),
+            Profile::Punch { radius, edge_radius } => {
+                let d = (x.hypot(y) - radius).max(0.0);
+                d * d / (2.0 * edge_radius)
+            }
+            Profile::Wavy { wavelength, amplitude, along_xy } => {
+                let k = 2.0 * PI / wavelength;
+                let gx = amplitude * (1.0 - (k * x).cos());
+                if along_xy {
+                    gx + amplitude * (1.0 - (k * y).cos())
+                } else {
+                    gx
+                }
+            }
+            Profile::Flat => 0.0,
+        }
+    }
 }
 
 impl Geometry {
@@ -224,6 +314,8 @@ pub enum NormalLoad {
     HalfWidth(f64),
     /// Given by the patches' pressures.
     FromPatches(f64),
+    /// The approach of the two bodies (m): displacement control of a surface.
+    Approach(f64),
 }
 
 /// Loads and friction.

@@ -16,7 +16,8 @@ use toml::Spanned;
 
 use super::{
     Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
-    NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Source, Substrate,
+    NormalLoad, Outputs, Patch, PatchShape, Profile, Scene, SolverOptions, Source, Substrate,
+    Surface, SurfaceBoundary,
 };
 use crate::error::{ErrorKind, SceneError};
 use crate::raw::{Qty, RawScene, SQty};
@@ -162,7 +163,7 @@ fn geometry(cx: &Reader<'_>, raw: &RawScene) -> Result<Geometry, SceneError> {
     let kind = cx.choice(
         &g.kind,
         "geometry.kind",
-        &["cylinder", "sphere", "ellipsoid", "punch", "patches"],
+        &["cylinder", "sphere", "ellipsoid", "punch", "patches", "surface"],
     )?;
     Ok(match kind {
         "cylinder" | "sphere" => {
@@ -204,6 +205,7 @@ fn geometry(cx: &Reader<'_>, raw: &RawScene) -> Result<Geometry, SceneError> {
                 }
             }
         }
+        "surface" => Geometry::Surface(surface(cx, g, gspan)?),
         _ => {
             let list = cx.required(&g.patches, "geometry.patches", gspan, "a list of patches")?;
             cx.record("geometry.patches", list.span());
@@ -343,6 +345,20 @@ fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, Sc
     };
     let l = raw.load.get_ref();
     let lspan = raw.load.span();
+    if let Some(d) = &l.approach {
+        if l.normal.is_some() || l.half_width.is_some() {
+            return Err(cx
+                .err(
+                    ErrorKind::Schema,
+                    "load.approach",
+                    Some(d.span()),
+                    "give exactly one of `normal`, `half_width` and `approach`",
+                )
+                .hint("normal = P for force control, or approach = d for displacement control"));
+        }
+        let d = cx.qty(d, "load.approach", Dim::LENGTH, "approach")?;
+        return finish_load(cx, l, NormalLoad::Approach(d), force_dim, force_name);
+    }
     let normal = match (geometry, &l.normal, &l.half_width) {
         (Geometry::Patches(p), None, None) => {
             NormalLoad::FromPatches(p.iter().map(Patch::force).sum())
@@ -372,6 +388,16 @@ fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, Sc
                 "normal = P (N/m in 2D, N in 3D), or half_width = a to prescribe the contact size",
             )),
     };
+    finish_load(cx, l, normal, force_dim, force_name)
+}
+
+fn finish_load(
+    cx: &Reader<'_>,
+    l: &crate::raw::RawLoad,
+    normal: NormalLoad,
+    force_dim: Dim,
+    force_name: &'static str,
+) -> Result<Load, SceneError> {
     let tangential = match &l.tangential {
         Some(t) => cx.qty(t, "load.tangential", force_dim, force_name)?,
         None => 0.0,
@@ -521,4 +547,127 @@ fn solver(cx: &Reader<'_>, s: Option<&crate::raw::RawSolver>) -> Result<SolverOp
         out.tolerance = cx.num(t, "solver.tolerance");
     }
     Ok(out)
+}
+
+/// `[geometry]` of kind "surface": the lattice, the profile and the roughness.
+fn surface(
+    cx: &Reader<'_>,
+    g: &crate::raw::RawGeometry,
+    gspan: std::ops::Range<usize>,
+) -> Result<Surface, SceneError> {
+    let boundary = match &g.boundary {
+        None => SurfaceBoundary::Free,
+        Some(b) => match cx.choice(b, "geometry.boundary", &["free", "periodic"])? {
+            "free" => SurfaceBoundary::Free,
+            _ => SurfaceBoundary::Periodic,
+        },
+    };
+    let size = cx.required(
+        &g.size,
+        "geometry.size",
+        gspan.clone(),
+        "size = [\"4 mm\", \"4 mm\"], the lattice extent in x and y",
+    )?;
+    let size = cx.pair(
+        size,
+        "geometry.size",
+        Dim::LENGTH,
+        "length",
+        "two lengths, e.g. [\"4 mm\", \"4 mm\"]",
+    )?;
+    let cells = cx.required(
+        &g.cells,
+        "geometry.cells",
+        gspan.clone(),
+        "cells = [256, 256], the cells along x and y",
+    )?;
+    cx.record("geometry.cells", cells.span());
+    let c = cells.get_ref();
+    let whole = |v: f64| v.fract() == 0.0 && (1.0..=1e6).contains(&v);
+    if c.len() != 2 || !c.iter().all(|v| whole(*v)) {
+        return Err(cx
+            .err(
+                ErrorKind::Schema,
+                "geometry.cells",
+                Some(cells.span()),
+                "expected two whole numbers of cells",
+            )
+            .hint("cells = [256, 256]"));
+    }
+    let cells = [c[0] as usize, c[1] as usize];
+    let p = cx.required(&g.profile, "geometry.profile", gspan, "[geometry.profile] with shape = \"sphere\", radius = \"10 mm\" (or ellipsoid, punch, wavy, flat)")?;
+    cx.record("geometry.profile", p.span());
+    let pr = p.get_ref();
+    let pspan = p.span();
+    fn need<'v>(
+        cx: &Reader<'_>,
+        v: &'v Option<crate::raw::SQty>,
+        key: &str,
+        span: std::ops::Range<usize>,
+        what: &str,
+    ) -> Result<&'v crate::raw::SQty, SceneError> {
+        cx.required(v, key, span, what)
+    }
+    let profile = match cx.choice(&pr.shape, "geometry.profile.shape", &["sphere", "ellipsoid", "cylinder", "punch", "wavy", "flat"])? {
+        "sphere" => Profile::Sphere {
+            radius: cx.qty(need(cx, &pr.radius, "geometry.profile.radius", pspan.clone(), "the radius")?, "geometry.profile.radius", Dim::LENGTH, "radius")?,
+        },
+        "ellipsoid" => {
+            let r = cx.required(&pr.radii, "geometry.profile.radii", p.span(), "radii = [Rx, Ry]")?;
+            Profile::Ellipsoid { radii: cx.pair(r, "geometry.profile.radii", Dim::LENGTH, "radius", "two radii, e.g. [\"20 mm\", \"10 mm\"]")? }
+        }
+        "punch" => Profile::Punch {
+            radius: cx.qty(need(cx, &pr.radius, "geometry.profile.radius", pspan.clone(), "the radius of the flat face")?, "geometry.profile.radius", Dim::LENGTH, "radius")?,
+            edge_radius: cx.qty(need(cx, &pr.edge_radius, "geometry.profile.edge_radius", pspan.clone(), "the edge radius")?, "geometry.profile.edge_radius", Dim::LENGTH, "radius")?,
+        },
+        "wavy" => Profile::Wavy {
+            wavelength: cx.qty(need(cx, &pr.wavelength, "geometry.profile.wavelength", pspan.clone(), "the wavelength")?, "geometry.profile.wavelength", Dim::LENGTH, "length")?,
+            amplitude: cx.qty(need(cx, &pr.amplitude, "geometry.profile.amplitude", pspan.clone(), "the amplitude")?, "geometry.profile.amplitude", Dim::LENGTH, "length")?,
+            along_xy: match &pr.along {
+                None => false,
+                Some(a) => cx.choice(a, "geometry.profile.along", &["x", "xy"])? == "xy",
+            },
+        },
+        "flat" => Profile::Flat,
+        _ => {
+            return Err(cx
+                .err(ErrorKind::Unsupported, "geometry.profile.shape", Some(pr.shape.span()), "the crowned cylinder profile is not solved in this version")
+                .hint("use sphere, ellipsoid, punch, wavy or flat, or give the crowned profile as a roughness file"))
+        }
+    };
+    let roughness = match &g.roughness {
+        None => None,
+        Some(r) => {
+            cx.record("geometry.roughness", r.span());
+            let rr = r.get_ref();
+            let Some(file) = &rr.file else {
+                return Err(cx
+                    .err(ErrorKind::Unsupported, "geometry.roughness", Some(r.span()), "generated roughness (hurst, rms_height, k_low, ...) is not available in this version")
+                    .hint("give file = \"heights.npy\" or \"heights.csv\" (one row per y)"));
+            };
+            cx.record("geometry.roughness.file", file.span());
+            let unit = match &rr.unit {
+                None => 1.0,
+                Some(u) => {
+                    cx.record("geometry.roughness.unit", u.span());
+                    parse_quantity(&format!("1 {}", u.get_ref()), Dim::LENGTH, "height unit")
+                        .map_err(|e| {
+                            cx.err(
+                                ErrorKind::Unit,
+                                "geometry.roughness.unit",
+                                Some(u.span()),
+                                e.to_string(),
+                            )
+                            .hint("a length unit, e.g. \"um\", \"nm\", \"m\"")
+                        })?
+                }
+            };
+            let heights = super::heights::read(file.get_ref(), cx.file.as_deref()).map_err(|m| {
+                cx.err(ErrorKind::Io, "geometry.roughness.file", Some(file.span()), m)
+                    .hint("a .npy file of float64 (shape (ny, nx)) or a .csv with one row per y, relative to the scene file")
+            })?;
+            Some(heights.into_iter().map(|h| h * unit).collect())
+        }
+    };
+    Ok(Surface { boundary, size, cells, profile, roughness })
 }

@@ -70,6 +70,68 @@ fn geometry(g: &Geometry) -> Result<(), Issue> {
             positive("geometry.radii", *ry, "length")?;
         }
         Geometry::Patches(ps) => patches(ps)?,
+        Geometry::Surface(s) => surface(s)?,
+    }
+    Ok(())
+}
+
+/// The largest lattice side of a surface.
+pub const MAX_SURFACE_CELLS: usize = 4096;
+
+fn surface(s: &super::Surface) -> Result<(), Issue> {
+    use super::Profile;
+    positive("geometry.size", s.size[0], "length")?;
+    positive("geometry.size", s.size[1], "length")?;
+    for c in s.cells {
+        if !(8..=MAX_SURFACE_CELLS).contains(&c) {
+            return Err(Issue::new(
+                ErrorKind::OutOfRange,
+                "geometry.cells",
+                format!("{c} cells along a side"),
+            )
+            .hint(format!("8 <= cells <= {MAX_SURFACE_CELLS} along each side")));
+        }
+    }
+    match s.profile {
+        Profile::Sphere { radius } => {
+            positive("geometry.profile.radius", radius, "radius")?;
+        }
+        Profile::Ellipsoid { radii } => {
+            positive("geometry.profile.radii", radii[0], "radius")?;
+            positive("geometry.profile.radii", radii[1], "radius")?;
+        }
+        Profile::Punch { radius, edge_radius } => {
+            positive("geometry.profile.radius", radius, "radius")?;
+            positive("geometry.profile.edge_radius", edge_radius, "radius")?;
+        }
+        Profile::Wavy { wavelength, amplitude, .. } => {
+            positive("geometry.profile.wavelength", wavelength, "length")?;
+            positive("geometry.profile.amplitude", amplitude, "length")?;
+        }
+        Profile::Flat => {}
+    }
+    if let Some(h) = &s.roughness {
+        let n = s.cells[0] * s.cells[1];
+        if h.len() != n {
+            return Err(Issue::new(
+                ErrorKind::OutOfRange,
+                "geometry.roughness.file",
+                format!("{} heights for {} x {} cells", h.len(), s.cells[0], s.cells[1]),
+            )
+            .hint("one row per y with one height per x cell, as `cells` says"));
+        }
+        if let Some(k) = h.iter().position(|v| !v.is_finite()) {
+            return Err(Issue::new(
+                ErrorKind::OutOfRange,
+                "geometry.roughness.file",
+                format!(
+                    "height {k} (row {}, column {}) is not a finite number",
+                    k / s.cells[0],
+                    k % s.cells[0]
+                ),
+            )
+            .hint("every height must be a number; fill missing points before reading"));
+        }
     }
     Ok(())
 }
@@ -218,6 +280,25 @@ fn load(scene: &Scene) -> Result<(), Issue> {
         }
         (_, NormalLoad::Force(p)) => {
             positive("load.normal", p, force_name)?;
+        }
+        (Geometry::Surface(_), NormalLoad::HalfWidth(_)) => {
+            return Err(Issue::new(
+                ErrorKind::Schema,
+                "load.half_width",
+                "a surface takes the normal force or the approach, not a half-width",
+            )
+            .hint("normal = \"10 N\" (force control) or approach = \"2 um\" (displacement control)"))
+        }
+        (Geometry::Surface(_), NormalLoad::Approach(d)) => {
+            positive("load.approach", d, "approach")?;
+        }
+        (_, NormalLoad::Approach(_)) => {
+            return Err(Issue::new(
+                ErrorKind::Schema,
+                "load.approach",
+                "the approach (displacement control) is for geometry.kind = \"surface\"",
+            )
+            .hint("give load.normal = P"))
         }
         (_, NormalLoad::HalfWidth(a)) => {
             positive("load.half_width", a, "half-width")?;

@@ -72,9 +72,43 @@ static PATCH: Table = Table {
     ],
 };
 
+static PROFILE: Table = Table {
+    fields: &[
+        req("shape", Kind::Str(&["sphere", "ellipsoid", "cylinder", "punch", "wavy", "flat"])),
+        f("radius", Kind::Qty("\"10 mm\"")),
+        f("radii", Kind::QtyArray("[\"20 mm\", \"10 mm\"]")),
+        f("edge_radius", Kind::Qty("\"1 mm\"")),
+        f("wavelength", Kind::Qty("\"1 mm\"")),
+        f("amplitude", Kind::Qty("\"1 um\"")),
+        f("along", Kind::Str(&["x", "xy"])),
+        f("length", Kind::Qty("\"10 mm\"")),
+        f("crown", Kind::Qty("\"5 um\"")),
+        f("end_radius", Kind::Qty("\"1 mm\"")),
+    ],
+};
+
+static ROUGHNESS: Table = Table {
+    fields: &[
+        f("file", Kind::Str(&[])),
+        f("unit", Kind::Str(&[])),
+        f("hurst", Kind::Num),
+        f("rms_height", Kind::Qty("\"1 um\"")),
+        f("rms_slope", Kind::Num),
+        f("k_low", Kind::Num),
+        f("k_rolloff", Kind::Num),
+        f("k_high", Kind::Num),
+        f("seed", Kind::Int),
+    ],
+};
+
 static GEOMETRY: Table = Table {
     fields: &[
-        req("kind", Kind::Str(&["cylinder", "sphere", "ellipsoid", "punch", "patches"])),
+        req("kind", Kind::Str(&["cylinder", "sphere", "ellipsoid", "punch", "patches", "surface"])),
+        f("boundary", Kind::Str(&["free", "periodic"])),
+        f("size", Kind::QtyArray("[\"4 mm\", \"4 mm\"]")),
+        f("cells", Kind::NumArray("[256, 256]")),
+        f("profile", Kind::Table(&PROFILE)),
+        f("roughness", Kind::Table(&ROUGHNESS)),
         f("radius", Kind::Qty("\"10 mm\"")),
         f("semi_axes", Kind::QtyArray(PAIR)),
         f("radii", Kind::QtyArray("[\"20 mm\", \"10 mm\"]")),
@@ -107,6 +141,7 @@ static LOAD: Table = Table {
     fields: &[
         f("normal", Kind::Qty("\"100 N\" (N/m in 2D)")),
         f("half_width", Kind::Qty("\"5 mm\"")),
+        f("approach", Kind::Qty("\"2 um\"")),
         f("tangential", Kind::Qty("\"30 N\" (N/m in 2D)")),
         f("direction_deg", Kind::Num),
         f("friction", Kind::Num),
@@ -166,9 +201,11 @@ static TOP: Table = Table {
 };
 
 /// Every table of the format with its dotted name, to say where a misplaced key belongs.
-fn tables() -> [(&'static str, &'static Table); 10] {
+fn tables() -> [(&'static str, &'static Table); 12] {
     [
         ("geometry", &GEOMETRY),
+        ("geometry.profile", &PROFILE),
+        ("geometry.roughness", &ROUGHNESS),
         ("geometry.patches", &PATCH),
         ("substrate", &SUBSTRATE),
         ("indenter", &INDENTER),

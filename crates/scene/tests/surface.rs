@@ -1,0 +1,145 @@
+//! Scenes of any surface (`geometry.kind = "surface"`): the normal-contact solver on the
+//! lattice against Hertz and Westergaard, force and displacement control, roughness files,
+//! partial slip on the computed contact, and the refusals of what is not solved.
+
+use std::f64::consts::PI;
+
+use stickslip_scene::{run, ErrorKind, Outcome, RunOptions, Scene};
+
+const BASE: &str = "[geometry]\nkind = \"surface\"\nBOUNDARY\nsize = [\"0.8 mm\", \"0.8 mm\"]\ncells = [128, 128]\n[geometry.profile]\nPROFILE\nROUGH\n[substrate]\nmodel = \"homogeneous\"\ne = \"210 GPa\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nLOAD\n";
+
+const SPHERE: &str = "shape = \"sphere\"\nradius = \"10 mm\"";
+
+#[allow(clippy::result_large_err)]
+fn go(
+    boundary: &str,
+    profile: &str,
+    rough: &str,
+    load: &str,
+) -> Result<Outcome, stickslip_scene::SceneError> {
+    let src = BASE
+        .replace("BOUNDARY", boundary)
+        .replace("PROFILE", profile)
+        .replace("ROUGH", rough)
+        .replace("LOAD", load);
+    let dir = std::env::temp_dir();
+    run(&Scene::from_toml_str(&src, Some(dir.join("s.toml")))?, &RunOptions::default())
+}
+
+/// E* of steel on steel.
+fn e_star() -> f64 {
+    210e9 / (2.0 * (1.0 - 0.3 * 0.3))
+}
+
+#[test]
+fn a_sphere_given_as_a_surface_is_hertz() {
+    let out = go("", SPHERE, "", "normal = \"10 N\"").unwrap();
+    let (p, r) = (10.0, 0.01);
+    let a = (3.0 * p * r / (4.0 * e_star())).cbrt();
+    let p0 = 3.0 * p / (2.0 * PI * a * a);
+    let h = 0.8e-3 / 128.0;
+    let c = &out.contact;
+    assert!((c.a - a).abs() <= h, "a = {} vs {a} (cell {h})", c.a);
+    assert!((c.p0 - p0).abs() <= 0.01 * p0, "p0 {} vs {p0}", c.p0);
+    let delta = a * a / r;
+    let d = c.indentation.unwrap();
+    assert!((d - delta).abs() <= 0.005 * delta, "approach {d} vs {delta}");
+    assert!((c.area.unwrap() - PI * a * a).abs() <= 2.0 * PI * a * h, "area {:?}", c.area);
+    assert!(out.audit.passed);
+    // Displacement control at that approach gives the same force.
+    let out2 = go("", SPHERE, "", &format!("approach = {d}")).unwrap();
+    assert!((out2.forces.normal - 10.0).abs() <= 1e-6 * 10.0, "force {}", out2.forces.normal);
+}
+
+#[test]
+fn partial_slip_on_the_computed_contact_follows_mindlin() {
+    let out =
+        go("", SPHERE, "", "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2").unwrap();
+    let g = out.zones.grid.unwrap();
+    // Mindlin: stick radius a (1 - T/fP)^(1/3), so a stick area fraction (1 - 0.5)^(2/3).
+    let want = 0.5f64.powf(2.0 / 3.0);
+    assert!((g.stick_area_fraction - want).abs() < 0.03, "{} vs {want}", g.stick_area_fraction);
+    assert!(out.audit.passed);
+}
+
+#[test]
+fn a_periodic_wave_in_full_contact_carries_westergaards_pressure() {
+    // Westergaard: full contact from p* = pi E* amplitude / wavelength; above it the pressure
+    // is the mean plus p* cos.
+    let (lambda, amp) = (0.8e-3, 0.05e-6);
+    let pstar = PI * e_star() * amp / lambda;
+    let mean = 1.5 * pstar;
+    let load = mean * 0.8e-3 * 0.8e-3;
+    let profile = format!("shape = \"wavy\"\nwavelength = {lambda}\namplitude = {amp}");
+    let out = go("boundary = \"periodic\"", &profile, "", &format!("normal = {load}")).unwrap();
+    let c = &out.contact;
+    assert_eq!(c.fraction, Some(1.0), "full contact");
+    assert!((c.p0 - (mean + pstar)).abs() <= 0.01 * pstar, "peak {} vs {}", c.p0, mean + pstar);
+}
+
+#[test]
+fn a_roughness_file_is_added_to_the_profile() {
+    let dir = std::env::temp_dir().join(format!("stickslip-surface-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // A flat (zero) roughness in um as CSV gives the smooth sphere's answer exactly.
+    let mut csv = String::from("# heights in um\n");
+    for _ in 0..128 {
+        csv.push_str(&vec!["0"; 128].join(","));
+        csv.push('\n');
+    }
+    std::fs::write(dir.join("flat.csv"), csv).unwrap();
+    let file = dir.join("flat.csv");
+    let rough = format!("[geometry.roughness]\nfile = \"{}\"\nunit = \"um\"", file.display());
+    let smooth = go("", SPHERE, "", "normal = \"10 N\"").unwrap();
+    let with = go("", SPHERE, &rough, "normal = \"10 N\"").unwrap();
+    // (the solver's parallel sums make runs agree to its tolerance, not bit for bit)
+    let (a, b) = (smooth.contact.p0, with.contact.p0);
+    assert!((a - b).abs() <= 1e-9 * a, "{a} vs {b}");
+    // A wrong shape is refused at the file key.
+    std::fs::write(dir.join("short.csv"), "1,2,3\n").unwrap();
+    let rough = format!("[geometry.roughness]\nfile = \"{}\"", dir.join("short.csv").display());
+    let e = go("", SPHERE, &rough, "normal = \"10 N\"").unwrap_err();
+    assert_eq!(e.key.as_deref(), Some("geometry.roughness.file"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn what_is_not_solved_is_refused_with_its_key() {
+    let cases = [
+        (
+            "",
+            "shape = \"cylinder\"\nradius = \"10 mm\"",
+            "",
+            "normal = \"10 N\"",
+            "geometry.profile.shape",
+            ErrorKind::Unsupported,
+        ),
+        (
+            "",
+            SPHERE,
+            "[geometry.roughness]\nhurst = 0.8",
+            "normal = \"10 N\"",
+            "geometry.roughness",
+            ErrorKind::Unsupported,
+        ),
+        (
+            "boundary = \"periodic\"",
+            SPHERE,
+            "",
+            "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2",
+            "geometry.boundary",
+            ErrorKind::Unsupported,
+        ),
+        ("", SPHERE, "", "half_width = \"0.1 mm\"", "load.half_width", ErrorKind::Schema),
+        ("", SPHERE, "", "approach = \"-1 um\"", "load.approach", ErrorKind::OutOfRange),
+    ];
+    for (b, p, r, l, key, kind) in cases {
+        let e = go(b, p, r, l).unwrap_err();
+        assert_eq!((e.key.as_deref(), e.kind), (Some(key), kind), "{e}");
+        assert!(e.hint.is_some() && e.position.is_some(), "{e}");
+    }
+    // The approach is for surfaces only.
+    let sphere = "[geometry]\nkind = \"sphere\"\nradius = 0.01\n[substrate]\nmodel = \"homogeneous\"\ne = 2e11\nnu = 0.3\n[load]\napproach = 1e-6\n";
+    let e = Scene::from_toml_str(sphere, None).unwrap_err();
+    assert_eq!(e.key.as_deref(), Some("load.approach"), "{e}");
+}
