@@ -100,7 +100,22 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)
             }
             files.push(("surface.csv".to_string(), std::mem::take(&mut s)));
         }
-        SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } if !x.is_empty() => {
+        SurfaceOut::Grid { x, y, p, qx, qy, stick, gap } if !x.is_empty() => {
+            // A surface's maps also as (ny, nx) arrays: pressure, tractions, gap, contact.
+            if let Some(gap) = gap {
+                let (nx, ny) = (x.len(), y.len());
+                let rows = |m: &Vec<Vec<f64>>| -> Vec<f64> {
+                    (0..ny).flat_map(|j| (0..nx).map(move |i| m[i][j])).collect()
+                };
+                for (name, m) in [("p", p), ("qx", qx), ("qy", qy), ("gap", gap)] {
+                    binary.push((format!("surface_{name}.npy"), npy(&rows(m), &[ny, nx])));
+                }
+                let stick_f: Vec<f64> =
+                    (0..ny).flat_map(|j| (0..nx).map(move |i| f64::from(stick[i][j]))).collect();
+                binary.push(("surface_stick.npy".to_string(), npy(&stick_f, &[ny, nx])));
+                binary.push(("surface_x.npy".to_string(), npy(x, &[nx])));
+                binary.push(("surface_y.npy".to_string(), npy(y, &[ny])));
+            }
             s.push_str("x_m,y_m,p_Pa,qx_Pa,qy_Pa,stick\n");
             for (i, xi) in x.iter().enumerate() {
                 for (j, yj) in y.iter().enumerate() {

@@ -143,3 +143,31 @@ fn what_is_not_solved_is_refused_with_its_key() {
     let e = Scene::from_toml_str(sphere, None).unwrap_err();
     assert_eq!(e.key.as_deref(), Some("load.approach"), "{e}");
 }
+
+#[test]
+fn a_surface_writes_its_maps_as_npy_with_the_gap_closed_under_pressure() {
+    let out = go("", SPHERE, "", "normal = \"10 N\"").unwrap();
+    let dir = std::env::temp_dir().join(format!("stickslip-surface-npy-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    stickslip_scene::write_outputs(&out, &dir, false).unwrap();
+    let read = |name: &str| -> Vec<f64> {
+        let b = std::fs::read(dir.join(name)).unwrap();
+        let h = u16::from_le_bytes([b[8], b[9]]) as usize;
+        let header = std::str::from_utf8(&b[10..10 + h]).unwrap();
+        assert!(header.contains("'shape': (128, 128)"), "{name}: {header}");
+        b[10 + h..].chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().unwrap())).collect()
+    };
+    let (p, gap) = (read("surface_p.npy"), read("surface_gap.npy"));
+    let delta = out.contact.indentation.unwrap();
+    let mut in_contact = 0;
+    for (p, g) in p.iter().zip(&gap) {
+        if *p > 0.0 {
+            in_contact += 1;
+            assert!(g.abs() <= 1e-8 * delta, "gap {g} under pressure {p}");
+        } else {
+            assert!(*g >= -1e-8 * delta, "penetration {g}");
+        }
+    }
+    assert!(in_contact > 100);
+    let _ = std::fs::remove_dir_all(&dir);
+}
