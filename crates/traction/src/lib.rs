@@ -24,6 +24,7 @@ pub mod grid;
 pub mod influence;
 pub mod lp;
 pub mod normal;
+pub mod roughness;
 pub mod solve;
 
 pub use contract::{

@@ -641,9 +641,8 @@ fn surface(
             cx.record("geometry.roughness", r.span());
             let rr = r.get_ref();
             let Some(file) = &rr.file else {
-                return Err(cx
-                    .err(ErrorKind::Unsupported, "geometry.roughness", Some(r.span()), "generated roughness (hurst, rms_height, k_low, ...) is not available in this version")
-                    .hint("give file = \"heights.npy\" or \"heights.csv\" (one row per y)"));
+                let heights = generated(cx, rr, r.span(), cells, size)?;
+                return Ok(Surface { boundary, size, cells, profile, roughness: Some(heights) });
             };
             cx.record("geometry.roughness.file", file.span());
             let unit = match &rr.unit {
@@ -670,4 +669,80 @@ fn surface(
         }
     };
     Ok(Surface { boundary, size, cells, profile, roughness })
+}
+
+/// Generated roughness: a self-affine random surface (traction::roughness) of the lattice.
+fn generated(
+    cx: &Reader<'_>,
+    rr: &crate::raw::RawRoughness,
+    span: std::ops::Range<usize>,
+    cells: [usize; 2],
+    size: [f64; 2],
+) -> Result<Vec<f64>, SceneError> {
+    use stickslip_traction::roughness::{Rms, SelfAffine};
+    let hurst = cx.num(
+        cx.required(
+            &rr.hurst,
+            "geometry.roughness.hurst",
+            span.clone(),
+            "hurst = 0.8 (0 < H <= 1), or file = \"heights.npy\"",
+        )?,
+        "geometry.roughness.hurst",
+    );
+    let rms = match (&rr.rms_height, &rr.rms_slope) {
+        (Some(h), None) => {
+            Rms::Height(cx.qty(h, "geometry.roughness.rms_height", Dim::LENGTH, "rms height")?)
+        }
+        (None, Some(s)) => Rms::Slope(cx.num(s, "geometry.roughness.rms_slope")),
+        _ => {
+            return Err(cx
+                .err(
+                    ErrorKind::Schema,
+                    "geometry.roughness",
+                    Some(span),
+                    "give exactly one of `rms_height` and `rms_slope`",
+                )
+                .hint("rms_height = \"1 um\", or rms_slope = 0.05"))
+        }
+    };
+    let nyquist = (cells[0] as f64 / 2.0).min(cells[1] as f64 * size[0] / (2.0 * size[1]));
+    let k_low = rr.k_low.as_ref().map_or(1.0, |k| cx.num(k, "geometry.roughness.k_low"));
+    let k_rolloff =
+        rr.k_rolloff.as_ref().map_or(k_low, |k| cx.num(k, "geometry.roughness.k_rolloff"));
+    let k_high = rr.k_high.as_ref().map_or(nyquist, |k| cx.num(k, "geometry.roughness.k_high"));
+    let seed = match &rr.seed {
+        None => 0,
+        Some(s) => {
+            cx.record("geometry.roughness.seed", s.span());
+            u64::try_from(*s.get_ref()).map_err(|_| {
+                cx.err(
+                    ErrorKind::OutOfRange,
+                    "geometry.roughness.seed",
+                    Some(s.span()),
+                    "a negative seed",
+                )
+                .hint("a whole number >= 0")
+            })?
+        }
+    };
+    let spec = SelfAffine { hurst, k_low, k_rolloff, k_high, rms, seed };
+    spec.heights(cells[0], cells[1], size).map_err(|e| {
+        let key = match &e {
+            stickslip_traction::Error::OutOfDomain { name, .. } => match *name {
+                "hurst" => "geometry.roughness.hurst",
+                "k_low" => "geometry.roughness.k_low",
+                "k_high" => "geometry.roughness.k_high",
+                "rms" => match rms {
+                    Rms::Height(_) => "geometry.roughness.rms_height",
+                    Rms::Slope(_) => "geometry.roughness.rms_slope",
+                },
+                _ => "geometry.roughness",
+            },
+            _ => "geometry.roughness",
+        };
+        let span = cx.spans.borrow().get(key).cloned();
+        cx.err(ErrorKind::OutOfRange, key, span, e.to_string()).hint(format!(
+            "0 < hurst <= 1, 1 <= k_low <= k_rolloff <= k_high <= {nyquist} (cycles per lattice length along x), rms > 0"
+        ))
+    })
 }
