@@ -402,6 +402,52 @@ impl ContactGrid {
 }
 
 impl ContactGrid {
+    /// The lattice the element centres lie on: `(nx, ny, x0, y0, cell)` with the lowest
+    /// centres `(x0, y0)`, the lattice size spanning all elements, and `cell[k] = j nx + i`
+    /// the lattice cell of element `k` (the FFT operators work on this lattice).
+    ///
+    /// # Errors
+    /// [`Error::EmptyGrid`] for an empty grid; [`Error::OutOfDomain`] if an element centre is
+    /// not on the lattice of spacing $(h_x, h_y)$ through the lowest centre (by more than
+    /// $10^{-6}$ cells), or two elements share a lattice cell.
+    pub(crate) fn lattice_cells(&self) -> Result<(usize, usize, f64, f64, Vec<usize>)> {
+        let n = self.len();
+        if n == 0 {
+            return Err(Error::EmptyGrid { reason: "the grid has no element" });
+        }
+        let x0 = self.x.iter().copied().fold(f64::INFINITY, f64::min);
+        let y0 = self.y.iter().copied().fold(f64::INFINITY, f64::min);
+        let mut idx = Vec::with_capacity(n);
+        for k in 0..n {
+            let fi = (self.x[k] - x0) / self.hx;
+            let fj = (self.y[k] - y0) / self.hy;
+            let (i, j) = (fi.round(), fj.round());
+            if (fi - i).abs() > 1e-6 || (fj - j).abs() > 1e-6 {
+                return Err(Error::OutOfDomain {
+                    name: "element centre offset from the lattice (cells)",
+                    value: (fi - i).abs().max((fj - j).abs()),
+                    allowed: "<= 1e-6: all centres on one lattice of spacing (hx, hy)",
+                });
+            }
+            idx.push((i as usize, j as usize));
+        }
+        let nx = idx.iter().map(|p| p.0).max().unwrap_or(0) + 1;
+        let ny = idx.iter().map(|p| p.1).max().unwrap_or(0) + 1;
+        let cell: Vec<usize> = idx.iter().map(|&(i, j)| j * nx + i).collect();
+        let mut seen = vec![false; nx * ny];
+        for (k, &c) in cell.iter().enumerate() {
+            if seen[c] {
+                return Err(Error::OutOfDomain {
+                    name: "element sharing a lattice cell (index)",
+                    value: k as f64,
+                    allowed: "one element per lattice cell",
+                });
+            }
+            seen[c] = true;
+        }
+        Ok((nx, ny, x0, y0, cell))
+    }
+
     /// The full-slip moment about the centre of the normal force,
     /// $M_f = f\,h_xh_y\sum_k p_k\,\lvert\mathbf x_k - \mathbf c\rvert$: every element
     /// slipping at $f p_k$ perpendicular to its radius. A twisting moment alone makes the

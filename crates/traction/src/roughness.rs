@@ -135,23 +135,7 @@ impl SelfAffine {
         if f.iter().all(|c| c.norm() == 0.0) {
             return Err(bad("k_high", self.k_high, "a band that holds at least one lattice mode"));
         }
-        // 2D inverse transform: rows, then columns.
-        let mut planner = FftPlanner::new();
-        let row = planner.plan_fft_inverse(nx);
-        for r in f.chunks_exact_mut(nx) {
-            row.process(r);
-        }
-        let col = planner.plan_fft_inverse(ny);
-        let mut buf = vec![Complex::new(0.0, 0.0); ny];
-        for i in 0..nx {
-            for j in 0..ny {
-                buf[j] = f[j * nx + i];
-            }
-            col.process(&mut buf);
-            for j in 0..ny {
-                f[j * nx + i] = buf[j];
-            }
-        }
+        fft2(&mut f, nx, ny, true);
         let mut h: Vec<f64> = f.iter().map(|c| c.re).collect();
         let mean = h.iter().sum::<f64>() / n as f64;
         h.iter_mut().for_each(|v| *v -= mean);
@@ -159,6 +143,30 @@ impl SelfAffine {
         let scale = rms / measure;
         h.iter_mut().for_each(|v| *v *= scale);
         Ok(h)
+    }
+}
+
+/// In-place 2D discrete Fourier transform of `f` (index `j * nx + i`), rows then columns,
+/// unnormalised; `inverse` for the backward transform.
+fn fft2(f: &mut [Complex<f64>], nx: usize, ny: usize, inverse: bool) {
+    let mut planner = FftPlanner::new();
+    let (row, col) = if inverse {
+        (planner.plan_fft_inverse(nx), planner.plan_fft_inverse(ny))
+    } else {
+        (planner.plan_fft_forward(nx), planner.plan_fft_forward(ny))
+    };
+    for r in f.chunks_exact_mut(nx) {
+        row.process(r);
+    }
+    let mut buf = vec![Complex::new(0.0, 0.0); ny];
+    for i in 0..nx {
+        for j in 0..ny {
+            buf[j] = f[j * nx + i];
+        }
+        col.process(&mut buf);
+        for j in 0..ny {
+            f[j * nx + i] = buf[j];
+        }
     }
 }
 
@@ -207,22 +215,7 @@ mod tests {
         assert!((rms - 1e-6).abs() <= 1e-12 * 1e-6, "rms {rms}");
         assert!(h.iter().sum::<f64>().abs() <= 1e-12 * 1e-6 * (nx * ny) as f64);
         let mut f: Vec<Complex<f64>> = h.iter().map(|v| Complex::new(*v, 0.0)).collect();
-        let mut planner = FftPlanner::new();
-        let row = planner.plan_fft_forward(nx);
-        for r in f.chunks_exact_mut(nx) {
-            row.process(r);
-        }
-        let col = planner.plan_fft_forward(ny);
-        let mut buf = vec![Complex::new(0.0, 0.0); ny];
-        for i in 0..nx {
-            for j in 0..ny {
-                buf[j] = f[j * nx + i];
-            }
-            col.process(&mut buf);
-            for j in 0..ny {
-                f[j * nx + i] = buf[j];
-            }
-        }
+        fft2(&mut f, nx, ny, false);
         let wrap =
             |m: usize, len: usize| if m <= len / 2 { m as f64 } else { m as f64 - len as f64 };
         let mut ratio: Option<f64> = None;

@@ -22,7 +22,7 @@ use super::outcome::{
 use super::{linspace, solver_err, Ctx};
 use crate::error::SceneError;
 use crate::plan::recipe::{
-    ContactField, ContactFieldMethod, ContactRecipe, LineField, LineFieldMethod, LineFriction,
+    ContactField, ContactFieldMethod, LineField, LineFieldMethod, LineFriction,
 };
 use crate::scene::FieldScale;
 
@@ -91,7 +91,6 @@ pub(crate) fn line(
 /// box, interpolated bilinearly between cell centres to the box points.
 pub(crate) fn contact(
     f: &ContactField,
-    r: &ContactRecipe,
     n: &ContactSolution,
     lat: &Lattice,
     cx: &mut Ctx<'_>,
@@ -140,7 +139,6 @@ pub(crate) fn contact(
             )
         }
     };
-    let _ = r;
     cx.ev.subsurface_field += total as u64;
     let mut a = FieldArrays::default();
     let mut peaks: [Option<FieldPeak>; 3] = [None; 3];
@@ -154,10 +152,11 @@ pub(crate) fn contact(
         a.sxz.push(s.xz);
         a.von_mises.push(inv.von_mises);
         a.tresca.push(inv.tresca);
-        a.max_principal.push(inv.principal[0].max(inv.principal[1]).max(inv.principal[2]));
+        let max_principal = inv.principal[0].max(inv.principal[1]).max(inv.principal[2]);
+        a.max_principal.push(max_principal);
         let (i, j, k) = (idx % nx, (idx / nx) % ny, idx / (nx * ny));
         let at = |value: f64| FieldPeak { value, x: xs[i], y: ys[j], z: zs[k] };
-        let vals = [inv.von_mises, inv.tresca, *a.max_principal.last().unwrap_or(&f64::NAN)];
+        let vals = [inv.von_mises, inv.tresca, max_principal];
         for (peak, v) in peaks.iter_mut().zip(vals) {
             if peak.is_none_or(|p| v > p.value) {
                 *peak = Some(at(v));

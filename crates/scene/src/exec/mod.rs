@@ -273,7 +273,7 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         None => None,
     };
     let field = match &r.field {
-        Some(f) => Field::Volume(Box::new(field::contact(f, r, &n, &lat, cx)?)),
+        Some(f) => Field::Volume(Box::new(field::contact(f, &n, &lat, cx)?)),
         None => Field::default(),
     };
     Ok(Parts {

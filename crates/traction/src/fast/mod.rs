@@ -54,9 +54,11 @@
 //! Sources: FORMULAS.md E (Mindlin), F (influence coefficients), G (Lubkin) for the
 //! references of the tests.
 
+mod newton;
 mod operator;
 mod solver;
 
+pub(crate) use operator::fast_size;
 pub use operator::{ConvScratch, TensorConvolution};
 pub(crate) use solver::{resultant_moment, SOLVER_NAME};
 pub use solver::{FastConfig, FastInfo, FastProblem, FastSolution, TractionDirections};

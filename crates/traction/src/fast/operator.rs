@@ -14,7 +14,7 @@
 //! spectra are real; only their real parts are stored. One product costs two forward and two
 //! inverse real 2D FFTs of size $M_x\times M_y$: $O(N\log N)$.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::grid::ContactGrid;
 use crate::influence::{tensor, Compliance, InfluenceModel};
 use rayon::prelude::*;
@@ -26,7 +26,7 @@ use std::sync::Arc;
 type C64 = Complex<f64>;
 
 /// Smallest even 5-smooth integer $\ge n$ (fast FFT sizes for rustfft/realfft).
-fn fast_size(n: usize) -> usize {
+pub(crate) fn fast_size(n: usize) -> usize {
     let mut m = n.max(2);
     loop {
         if m % 2 == 0 {
@@ -99,46 +99,12 @@ impl TensorConvolution {
     /// and completed by the parity of the tensor.
     ///
     /// # Errors
-    /// [`Error::EmptyGrid`] for an empty grid; [`Error::OutOfDomain`] if an element centre is
+    /// [`crate::Error::EmptyGrid`] for an empty grid; [`crate::Error::OutOfDomain`] if an element centre is
     /// not on the lattice of spacing $(h_x, h_y)$ through the lowest centre, or two elements
     /// share a lattice cell.
     pub fn new(grid: &ContactGrid, c: &Compliance, model: InfluenceModel) -> Result<Self> {
         let n = grid.len();
-        if n == 0 {
-            return Err(Error::EmptyGrid { reason: "the grid has no element" });
-        }
-        let x0 = grid.x.iter().copied().fold(f64::INFINITY, f64::min);
-        let y0 = grid.y.iter().copied().fold(f64::INFINITY, f64::min);
-        let mut idx = Vec::with_capacity(n);
-        for k in 0..n {
-            let fi = (grid.x[k] - x0) / grid.hx;
-            let fj = (grid.y[k] - y0) / grid.hy;
-            let (i, j) = (fi.round(), fj.round());
-            if (fi - i).abs() > 1e-6 || (fj - j).abs() > 1e-6 {
-                return Err(Error::OutOfDomain {
-                    name: "element centre offset from the lattice (cells)",
-                    value: (fi - i).abs().max((fj - j).abs()),
-                    allowed: "<= 1e-6: all centres on one lattice of spacing (hx, hy)",
-                });
-            }
-            idx.push((i as usize, j as usize));
-        }
-        let nx = idx.iter().map(|p| p.0).max().unwrap_or(0) + 1;
-        let ny = idx.iter().map(|p| p.1).max().unwrap_or(0) + 1;
-        let cell: Vec<usize> = idx.iter().map(|&(i, j)| j * nx + i).collect();
-        {
-            let mut seen = vec![false; nx * ny];
-            for (k, &c) in cell.iter().enumerate() {
-                if seen[c] {
-                    return Err(Error::OutOfDomain {
-                        name: "element sharing a lattice cell (index)",
-                        value: k as f64,
-                        allowed: "one element per lattice cell",
-                    });
-                }
-                seen[c] = true;
-            }
-        }
+        let (nx, ny, _, _, cell) = grid.lattice_cells()?;
         let mx = fast_size(2 * nx - 1);
         let my = fast_size(2 * ny - 1);
         let mxh = mx / 2 + 1;

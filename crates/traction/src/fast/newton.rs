@@ -1,0 +1,692 @@
+//! The semismooth Newton / projected conjugate-gradient iteration of the fast solver
+//! ([`FastProblem::solve_with`] runs it; the method is described in the module
+//! documentation of [`crate::fast`]).
+
+use super::operator::{ConvScratch, TensorConvolution};
+use super::solver::{
+    resultant_moment, FastInfo, FastProblem, FastSolution, TractionDirections, SOLVER_NAME,
+};
+use crate::contract::LoadKind;
+use crate::error::{Error, Result};
+use crate::solve::{ElementState, Regime};
+use std::time::Instant;
+/// A rigid-body mode evaluated at a point.
+#[derive(Debug, Clone, Copy)]
+enum Mode {
+    Ex,
+    Ey,
+    Rot(f64, f64),
+    Along(f64, f64),
+}
+
+impl Mode {
+    #[inline]
+    fn at(self, x: f64, y: f64) -> (f64, f64) {
+        match self {
+            Mode::Ex => (1.0, 0.0),
+            Mode::Ey => (0.0, 1.0),
+            Mode::Rot(cx, cy) => (-(y - cy), x - cx),
+            Mode::Along(tx, ty) => (tx, ty),
+        }
+    }
+}
+
+// Index loops read best for a 3 x 3 Cholesky factorisation.
+#[allow(clippy::needless_range_loop)]
+/// Small dense Cholesky solve for the $\le 3$ load constraints; `None` if not positive
+/// definite (relative pivot below $10^{-13}$).
+fn small_spd_solve(a: &[[f64; 3]; 3], m: usize, b: &[f64]) -> Option<[f64; 3]> {
+    let mut l = [[0.0; 3]; 3];
+    let scale = (0..m).map(|i| a[i][i].abs()).fold(0.0, f64::max);
+    for i in 0..m {
+        for j in 0..=i {
+            let mut s = a[i][j];
+            for p in 0..j {
+                s -= l[i][p] * l[j][p];
+            }
+            if i == j {
+                if s.is_nan() || s <= 1e-13 * scale {
+                    return None;
+                }
+                l[i][i] = s.sqrt();
+            } else {
+                l[i][j] = s / l[j][j];
+            }
+        }
+    }
+    let mut y = [0.0; 3];
+    for i in 0..m {
+        let mut s = b[i];
+        for p in 0..i {
+            s -= l[i][p] * y[p];
+        }
+        y[i] = s / l[i][i];
+    }
+    let mut x = [0.0; 3];
+    for i in (0..m).rev() {
+        let mut s = y[i];
+        for p in i + 1..m {
+            s -= l[p][i] * x[p];
+        }
+        x[i] = s / l[i][i];
+    }
+    Some(x)
+}
+
+/// One free component of the Newton system: element and unit vector.
+#[derive(Debug, Clone, Copy)]
+struct Dof {
+    k: usize,
+    e: (f64, f64),
+}
+
+pub(super) struct Solver<'p, 'a> {
+    p: &'p FastProblem<'a>,
+    op: &'p TensorConvolution,
+    scratch: &'p mut ConvScratch,
+    n: usize,
+    area: f64,
+    cap: Vec<f64>,
+    dirs: Option<Vec<(f64, f64)>>,
+    modes: Vec<Mode>,
+    loads: Vec<f64>,
+    centre: (f64, f64),
+    k0: [f64; 3],
+    rho: f64,
+    products: usize,
+    // Work fields.
+    wx: Vec<f64>,
+    wy: Vec<f64>,
+    vx: Vec<f64>,
+    vy: Vec<f64>,
+}
+
+impl<'p, 'a> Solver<'p, 'a> {
+    pub(super) fn new(
+        p: &'p FastProblem<'a>,
+        op: &'p TensorConvolution,
+        scratch: &'p mut ConvScratch,
+    ) -> Self {
+        let g = p.grid;
+        let n = g.len();
+        let cap: Vec<f64> = g.pressure.iter().map(|pk| p.friction * pk).collect();
+        let centre = p.load.centre().unwrap_or_else(|| g.force_centroid());
+        let (tx, ty) = p.load.force_components();
+        let tmag = tx.hypot(ty);
+        let that = if tmag > 0.0 { (tx / tmag, ty / tmag) } else { (1.0, 0.0) };
+        let dirs = match &p.directions {
+            TractionDirections::Free => None,
+            TractionDirections::ParallelToForce => Some(vec![that; n]),
+            TractionDirections::Fixed(d) => Some(d.clone()),
+        };
+        let (modes, loads) = match (&dirs, p.load.moment_value()) {
+            (None, None) => (vec![Mode::Ex, Mode::Ey], vec![tx, ty]),
+            (None, Some(m)) => {
+                (vec![Mode::Ex, Mode::Ey, Mode::Rot(centre.0, centre.1)], vec![tx, ty, m])
+            }
+            (Some(_), Some(m)) => (vec![Mode::Rot(centre.0, centre.1)], vec![m]),
+            (Some(_), None) => (vec![Mode::Along(that.0, that.1)], vec![tmag]),
+        };
+        let k0 = op.self_term();
+        Self {
+            p,
+            op,
+            scratch,
+            n,
+            area: g.element_area(),
+            cap,
+            dirs,
+            modes,
+            loads,
+            centre,
+            k0,
+            rho: 2.0 / (k0[0] + k0[2]),
+            products: 0,
+            wx: vec![0.0; n],
+            wy: vec![0.0; n],
+            vx: vec![0.0; n],
+            vy: vec![0.0; n],
+        }
+    }
+
+    /// $\mathbf u = K*\mathbf q$ into `(ux, uy)`.
+    fn product(&mut self, qx: &[f64], qy: &[f64], ux: &mut [f64], uy: &mut [f64]) {
+        self.op.apply(qx, qy, ux, uy, self.scratch);
+        self.products += 1;
+    }
+
+    /// Rigid motion at element k for mode coefficients `mv`.
+    #[inline]
+    fn rigid(&self, mv: &[f64], k: usize) -> (f64, f64) {
+        let (x, y) = (self.p.grid.x[k], self.p.grid.y[k]);
+        let mut w = (0.0, 0.0);
+        for (m, c) in self.modes.iter().zip(mv) {
+            let v = m.at(x, y);
+            w.0 += c * v.0;
+            w.1 += c * v.1;
+        }
+        w
+    }
+
+    /// Project a vector on element k's admitted space.
+    #[inline]
+    fn proj(&self, k: usize, v: (f64, f64)) -> (f64, f64) {
+        match &self.dirs {
+            None => v,
+            Some(d) => {
+                let t = d[k];
+                let s = t.0 * v.0 + t.1 * v.1;
+                (s * t.0, s * t.1)
+            }
+        }
+    }
+
+    /// Capacity-weighted starting traction meeting the load constraints:
+    /// $\mathbf q_k = c_k\,\Pi_k\sum_j\alpha_j\mathbf m_j(\mathbf x_k)$, clamped to the disc.
+    fn initial(&self) -> (Vec<f64>, Vec<f64>) {
+        let g = self.p.grid;
+        let nm = self.modes.len();
+        let mut gram = [[0.0; 3]; 3];
+        for k in 0..self.n {
+            let pm: Vec<(f64, f64)> =
+                self.modes.iter().map(|m| self.proj(k, m.at(g.x[k], g.y[k]))).collect();
+            for i in 0..nm {
+                for j in 0..nm {
+                    gram[i][j] += self.area * self.cap[k] * (pm[i].0 * pm[j].0 + pm[i].1 * pm[j].1);
+                }
+            }
+        }
+        let alpha = small_spd_solve(&gram, nm, &self.loads).unwrap_or([0.0; 3]);
+        let mut qx = vec![0.0; self.n];
+        let mut qy = vec![0.0; self.n];
+        for k in 0..self.n {
+            let mut v = (0.0, 0.0);
+            for (m, a) in self.modes.iter().zip(&alpha) {
+                let w = m.at(g.x[k], g.y[k]);
+                v.0 += a * w.0;
+                v.1 += a * w.1;
+            }
+            let v = self.proj(k, v);
+            let (mut a, mut b) = (self.cap[k] * v.0, self.cap[k] * v.1);
+            let r = a.hypot(b);
+            if r > self.cap[k] {
+                a *= self.cap[k] / r;
+                b *= self.cap[k] / r;
+            }
+            qx[k] = a;
+            qy[k] = b;
+        }
+        (qx, qy)
+    }
+
+    /// Relative complementarity residual and relative load residual of a state.
+    fn residuals(&self, qx: &[f64], qy: &[f64], ux: &[f64], uy: &[f64], mv: &[f64]) -> (f64, f64) {
+        let mut rr = 0.0;
+        let mut qq = 0.0;
+        for k in 0..self.n {
+            let w = self.rigid(mv, k);
+            let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+            let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
+            let zr = z.0.hypot(z.1);
+            let pz = if zr > self.cap[k] {
+                let f = self.cap[k] / zr;
+                (z.0 * f, z.1 * f)
+            } else {
+                z
+            };
+            rr += (qx[k] - pz.0).powi(2) + (qy[k] - pz.1).powi(2);
+            qq += qx[k] * qx[k] + qy[k] * qy[k];
+        }
+        let res = if qq > 0.0 { (rr / qq).sqrt() } else { rr.sqrt() };
+        (res, self.load_residual(qx, qy))
+    }
+
+    fn load_residual(&self, qx: &[f64], qy: &[f64]) -> f64 {
+        let lnorm = self.loads.iter().map(|l| l * l).sum::<f64>().sqrt();
+        let (got, scale) = self.load_values(qx, qy);
+        let err = got.iter().zip(&self.loads).map(|(a, b)| (a - b).powi(2)).sum::<f64>().sqrt();
+        err / lnorm.max(1e-300 * scale).max(f64::MIN_POSITIVE)
+    }
+
+    /// $h_xh_y\sum_k\mathbf m_j\cdot\mathbf q_k$ per mode, and a magnitude scale.
+    fn load_values(&self, qx: &[f64], qy: &[f64]) -> (Vec<f64>, f64) {
+        let g = self.p.grid;
+        let mut out = vec![0.0; self.modes.len()];
+        let mut scale = 0.0;
+        for k in 0..self.n {
+            for (o, m) in out.iter_mut().zip(&self.modes) {
+                let v = m.at(g.x[k], g.y[k]);
+                let t = self.area * (v.0 * qx[k] + v.1 * qy[k]);
+                *o += t;
+                scale += t.abs();
+            }
+        }
+        (out, scale)
+    }
+
+    pub(super) fn run(mut self) -> Result<FastSolution> {
+        let t0 = Instant::now();
+        let n = self.n;
+        let g = self.p.grid;
+        let tol = self.p.config.tolerance().rel();
+        if let Some(s) = self.trivial_or_gross()? {
+            return Ok(s);
+        }
+        let (mut qx, mut qy) = self.initial();
+        let mut ux = vec![0.0; n];
+        let mut uy = vec![0.0; n];
+        let mut mv = vec![0.0; self.modes.len()];
+        let mut stick = vec![true; n];
+        let mut iterations = 0usize;
+        let mut cg_total = 0usize;
+        let mut res = f64::INFINITY;
+        let mut load_res;
+        let mut first = true;
+        let mut best = f64::INFINITY;
+        let mut tighten = 1.0;
+        let mut nvec: Vec<(f64, f64)> = vec![(0.0, 0.0); n];
+        loop {
+            // Classification and projection of the slip elements.
+            if !first {
+                for k in 0..n {
+                    let w = self.rigid(&mv, k);
+                    let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+                    let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
+                    let zr = z.0.hypot(z.1);
+                    if self.cap[k] == 0.0 {
+                        stick[k] = false;
+                        qx[k] = 0.0;
+                        qy[k] = 0.0;
+                    } else if zr <= self.cap[k] {
+                        stick[k] = true;
+                    } else {
+                        stick[k] = false;
+                        let nk = (z.0 / zr, z.1 / zr);
+                        nvec[k] = nk;
+                        qx[k] = self.cap[k] * nk.0;
+                        qy[k] = self.cap[k] * nk.1;
+                    }
+                }
+            } else {
+                for k in 0..n {
+                    stick[k] = self.cap[k] > 0.0;
+                    if !stick[k] {
+                        qx[k] = 0.0;
+                        qy[k] = 0.0;
+                    }
+                }
+            }
+            {
+                let (a, b) = (qx.clone(), qy.clone());
+                self.product(&a, &b, &mut ux, &mut uy);
+            }
+            // Newton system.
+            let mut dofs: Vec<Dof> = Vec::with_capacity(2 * n);
+            let mut diag_d: Vec<f64> = Vec::with_capacity(2 * n);
+            let mut rhs: Vec<f64> = Vec::with_capacity(2 * n);
+            for k in 0..n {
+                let w = self.rigid(&mv, k);
+                let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+                let mut push = |e: (f64, f64), d: f64| {
+                    dofs.push(Dof { k, e });
+                    diag_d.push(d);
+                    rhs.push(e.0 * s.0 + e.1 * s.1);
+                };
+                match (&self.dirs, stick[k]) {
+                    (None, true) => {
+                        push((1.0, 0.0), 0.0);
+                        push((0.0, 1.0), 0.0);
+                    }
+                    (Some(d), true) => push(d[k], 0.0),
+                    (None, false) if self.cap[k] > 0.0 => {
+                        let nk = nvec[k];
+                        let ns = (nk.0 * s.0 + nk.1 * s.1).max(0.0);
+                        push((-nk.1, nk.0), ns / self.cap[k]);
+                    }
+                    _ => {}
+                }
+            }
+            let (have, _) = self.load_values(&qx, &qy);
+            let b: Vec<f64> =
+                self.loads.iter().zip(&have).map(|(l, h)| (l - h) / self.area).collect();
+            // Inner tolerance: 1e-4 relative, tightened near convergence and whenever the
+            // residual failed to decrease (inexact steps can make the active set wander).
+            let eta = (0.1 * res).clamp(1e-6, 1e-4) * tighten;
+            let qnorm = qx.iter().chain(&qy).map(|v| v * v).sum::<f64>().sqrt();
+            let abs_floor = 0.05 * tol * qnorm;
+            let (x, dm, its) =
+                self.pcg(&dofs, &diag_d, &rhs, &b, eta, abs_floor).map_err(|e| match e {
+                    Error::NoStickLeft { solver, load, free_components, .. } => {
+                        Error::NoStickLeft {
+                            solver,
+                            load,
+                            iteration: iterations + 1,
+                            free_components,
+                        }
+                    }
+                    e => e,
+                })?;
+            cg_total += its;
+            for (d, xv) in dofs.iter().zip(&x) {
+                qx[d.k] += xv * d.e.0;
+                qy[d.k] += xv * d.e.1;
+            }
+            for (m, d) in mv.iter_mut().zip(&dm) {
+                *m += d;
+            }
+            {
+                let (a, b) = (qx.clone(), qy.clone());
+                self.product(&a, &b, &mut ux, &mut uy);
+            }
+            iterations += 1;
+            let (r, lr) = self.residuals(&qx, &qy, &ux, &uy, &mv);
+            if r >= best {
+                tighten = (tighten * 0.01).max(1e-6);
+            }
+            best = best.min(r);
+            res = r;
+            load_res = lr;
+            if res <= tol && load_res <= tol {
+                break;
+            }
+            if iterations >= self.p.config.max_iterations() {
+                return Err(Error::NotConverged {
+                    solver: SOLVER_NAME,
+                    iterations,
+                    residual: res.max(load_res),
+                    tolerance: tol,
+                });
+            }
+            first = false;
+        }
+
+        // Final state.
+        let mut state = Vec::with_capacity(n);
+        let mut slip = Vec::with_capacity(n);
+        for k in 0..n {
+            let w = self.rigid(&mv, k);
+            let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+            let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
+            let st = if z.0.hypot(z.1) > self.cap[k] && self.cap[k] > 0.0
+                || self.cap[k] == 0.0 && s.0.hypot(s.1) > 0.0
+            {
+                ElementState::Slip
+            } else {
+                ElementState::Stick
+            };
+            state.push(st);
+            slip.push(s);
+        }
+        let n_slip = state.iter().filter(|s| **s == ElementState::Slip).count();
+        let regime = if n_slip == 0 { Regime::FullStick } else { Regime::PartialSlip };
+        let (shift, rotation) = self.shift_rotation(&mv);
+        let (resultant, moment) = resultant_moment(g, &qx, &qy, self.centre);
+        let info = FastInfo {
+            iterations,
+            cg_iterations: cg_total,
+            products: self.products,
+            residual: res,
+            load_residual: load_res,
+            solve_seconds: t0.elapsed().as_secs_f64(),
+            setup_seconds: 0.0,
+            fft_size: self.op.fft_size(),
+        };
+        Ok(FastSolution {
+            regime,
+            traction: qx.iter().zip(&qy).map(|(a, b)| (*a, *b)).collect(),
+            state,
+            slip,
+            displacement: ux.iter().zip(&uy).map(|(a, b)| (*a, *b)).collect(),
+            shift,
+            rotation,
+            centre: self.centre,
+            resultant,
+            moment,
+            info,
+        })
+    }
+
+    /// Shift and rotation from the mode coefficients.
+    fn shift_rotation(&self, mv: &[f64]) -> ((f64, f64), f64) {
+        let mut shift = (0.0, 0.0);
+        let mut rot = 0.0;
+        for (m, c) in self.modes.iter().zip(mv) {
+            match m {
+                Mode::Ex => shift.0 += c,
+                Mode::Ey => shift.1 += c,
+                Mode::Rot(..) => rot += c,
+                Mode::Along(tx, ty) => {
+                    shift.0 += c * tx;
+                    shift.1 += c * ty;
+                }
+            }
+        }
+        (shift, rot)
+    }
+
+    /// Zero load (zero traction) and gross slip under a force alone (every element at
+    /// $c_k$ along the force); loads beyond the capacity are errors.
+    fn trivial_or_gross(&mut self) -> Result<Option<FastSolution>> {
+        let n = self.n;
+        let g = self.p.grid;
+        let t0 = Instant::now();
+        let all_zero = self.loads.iter().all(|l| *l == 0.0);
+        // Capacity of each mode: the largest load the discs can carry in it alone.
+        for (j, m) in self.modes.iter().enumerate() {
+            let lone = self.loads.iter().enumerate().all(|(i, l)| i == j || *l == 0.0);
+            let capj: f64 = (0..n)
+                .map(|k| {
+                    let v = self.proj(k, m.at(g.x[k], g.y[k]));
+                    self.area * self.cap[k] * v.0.hypot(v.1)
+                })
+                .sum();
+            let ratio = self.loads[j].abs() / capj;
+            if lone && ratio >= 1.0 - 1e-12 || ratio > 1.0 + 1e-12 {
+                let is_force = matches!(m, Mode::Ex | Mode::Ey | Mode::Along(..));
+                let force_only = is_force && self.p.load.moment_value().is_none();
+                if force_only && ratio <= 1.0 + 1e-12 {
+                    break; // gross slip under a force: handled below
+                }
+                return Err(Error::CapacityExceeded {
+                    load: if is_force { LoadKind::Force } else { LoadKind::Moment },
+                    requested: self.loads[j].abs(),
+                    capacity: capj,
+                });
+            }
+        }
+        let (tx, ty) = self.p.load.force_components();
+        let tmag = tx.hypot(ty);
+        let fcap: f64 = self.cap.iter().map(|c| c * self.area).sum();
+        let gross = self.p.load.moment_value().is_none() && tmag >= fcap * (1.0 - 1e-12);
+        if gross && tmag > fcap * (1.0 + 1e-12) {
+            return Err(Error::CapacityExceeded {
+                load: LoadKind::Force,
+                requested: tmag,
+                capacity: fcap,
+            });
+        }
+        if !all_zero && !gross {
+            return Ok(None);
+        }
+        let that = if tmag > 0.0 { (tx / tmag, ty / tmag) } else { (1.0, 0.0) };
+        let mut qx = vec![0.0; n];
+        let mut qy = vec![0.0; n];
+        if gross {
+            for k in 0..n {
+                let v = self.proj(k, that);
+                let r = v.0.hypot(v.1);
+                if r > 0.0 {
+                    qx[k] = self.cap[k] * v.0 / r;
+                    qy[k] = self.cap[k] * v.1 / r;
+                }
+            }
+        }
+        let mut ux = vec![0.0; n];
+        let mut uy = vec![0.0; n];
+        self.product(&qx.clone(), &qy.clone(), &mut ux, &mut uy);
+        // Onset of sliding: the rigid shift along T that first makes every slip non-negative.
+        let beta = if gross {
+            (0..n).map(|k| that.0 * ux[k] + that.1 * uy[k]).fold(f64::NEG_INFINITY, f64::max)
+        } else {
+            0.0
+        };
+        let shift = (beta * that.0, beta * that.1);
+        let slip: Vec<(f64, f64)> =
+            (0..n).map(|k| self.proj(k, (shift.0 - ux[k], shift.1 - uy[k]))).collect();
+        let state = vec![if gross { ElementState::Slip } else { ElementState::Stick }; n];
+        let (resultant, moment) = resultant_moment(g, &qx, &qy, self.centre);
+        Ok(Some(FastSolution {
+            regime: if gross { Regime::GrossSlip } else { Regime::FullStick },
+            traction: qx.iter().zip(&qy).map(|(a, b)| (*a, *b)).collect(),
+            state,
+            slip,
+            displacement: ux.iter().zip(&uy).map(|(a, b)| (*a, *b)).collect(),
+            shift,
+            rotation: 0.0,
+            centre: self.centre,
+            resultant,
+            moment,
+            info: FastInfo {
+                iterations: 0,
+                cg_iterations: 0,
+                products: self.products,
+                residual: 0.0,
+                load_residual: self.load_residual(&qx, &qy),
+                solve_seconds: t0.elapsed().as_secs_f64(),
+                setup_seconds: 0.0,
+                fft_size: self.op.fft_size(),
+            },
+        }))
+    }
+
+    /// $H x$ with $H = P^{\mathsf T}KP + D$.
+    fn h_apply(&mut self, dofs: &[Dof], diag_d: &[f64], x: &[f64], out: &mut [f64]) {
+        let mut px = std::mem::take(&mut self.wx);
+        let mut py = std::mem::take(&mut self.wy);
+        let mut vx = std::mem::take(&mut self.vx);
+        let mut vy = std::mem::take(&mut self.vy);
+        px.fill(0.0);
+        py.fill(0.0);
+        for (d, xv) in dofs.iter().zip(x) {
+            px[d.k] += xv * d.e.0;
+            py[d.k] += xv * d.e.1;
+        }
+        self.product(&px, &py, &mut vx, &mut vy);
+        for (i, d) in dofs.iter().enumerate() {
+            out[i] = d.e.0 * vx[d.k] + d.e.1 * vy[d.k] + diag_d[i] * x[i];
+        }
+        self.wx = px;
+        self.wy = py;
+        self.vx = vx;
+        self.vy = vy;
+    }
+
+    /// Jacobi-preconditioned projected CG for
+    /// $Hx - B^{\mathsf T}\lambda = \text{rhs},\ Bx = b$ (Gould, Hribar & Nocedal 2001,
+    /// Algorithm II with the constraint preconditioner $\mathrm{diag}(H)$). Stops when the
+    /// projected preconditioned residual falls below `eta` times its start or below
+    /// `abs_floor` (traction units). Returns $x$, $\lambda$ (the rigid-mode increments) and
+    /// the iteration count.
+    fn pcg(
+        &mut self,
+        dofs: &[Dof],
+        diag_d: &[f64],
+        rhs: &[f64],
+        b: &[f64],
+        eta: f64,
+        abs_floor: f64,
+    ) -> Result<(Vec<f64>, Vec<f64>, usize)> {
+        let g = self.p.grid;
+        let nd = dofs.len();
+        let nm = self.modes.len();
+        // Constraint rows B_jd = m_j(x_k) . e_d and the preconditioner M = diag(H).
+        let mut bm = vec![0.0; nm * nd];
+        let mut minv = vec![0.0; nd];
+        for (i, d) in dofs.iter().enumerate() {
+            for (j, m) in self.modes.iter().enumerate() {
+                let v = m.at(g.x[d.k], g.y[d.k]);
+                bm[j * nd + i] = v.0 * d.e.0 + v.1 * d.e.1;
+            }
+            let kd = d.e.0 * (self.k0[0] * d.e.0 + self.k0[1] * d.e.1)
+                + d.e.1 * (self.k0[1] * d.e.0 + self.k0[2] * d.e.1);
+            minv[i] = 1.0 / (kd + diag_d[i]);
+        }
+        let mut w = [[0.0; 3]; 3];
+        for i in 0..nm {
+            for j in 0..nm {
+                w[i][j] = (0..nd).map(|d| bm[i * nd + d] * minv[d] * bm[j * nd + d]).sum();
+            }
+        }
+        let no_stick = || Error::NoStickLeft {
+            solver: SOLVER_NAME,
+            load: self.p.load.kind(),
+            iteration: 0,
+            free_components: nd,
+        };
+        if small_spd_solve(&w, nm, &[1.0; 3][..nm]).is_none() {
+            return Err(no_stick());
+        }
+        // z = M^-1 (r - B^T l), l = W^-1 B M^-1 r. The residual itself is replaced by
+        // r - B^T l (the "residual update" of Gould, Hribar & Nocedal, §6): it leaves the
+        // iteration unchanged in exact arithmetic and keeps r small, so that z stays in the
+        // null space of B to rounding; the l are summed into the multiplier.
+        let project = |r: &mut [f64], z: &mut [f64], acc: &mut [f64; 3]| -> Option<()> {
+            let mut c = [0.0; 3];
+            for (j, cj) in c.iter_mut().enumerate().take(nm) {
+                *cj = (0..nd).map(|d| bm[j * nd + d] * minv[d] * r[d]).sum();
+            }
+            let l = small_spd_solve(&w, nm, &c[..nm])?;
+            for d in 0..nd {
+                let bt: f64 = (0..nm).map(|j| bm[j * nd + d] * l[j]).sum();
+                r[d] -= bt;
+                z[d] = minv[d] * r[d];
+            }
+            for j in 0..nm {
+                acc[j] += l[j];
+            }
+            Some(())
+        };
+        // x0 = M^-1 B^T W^-1 b.
+        let l0 = small_spd_solve(&w, nm, b).ok_or_else(no_stick)?;
+        let mut x: Vec<f64> = (0..nd)
+            .map(|d| minv[d] * (0..nm).map(|j| bm[j * nd + d] * l0[j]).sum::<f64>())
+            .collect();
+        let mut hx = vec![0.0; nd];
+        self.h_apply(dofs, diag_d, &x, &mut hx);
+        let mut r: Vec<f64> = rhs.iter().zip(&hx).map(|(a, b)| a - b).collect();
+        let mut z = vec![0.0; nd];
+        let mut acc = [0.0; 3];
+        project(&mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        let norm = |v: &[f64]| v.iter().map(|a| a * a).sum::<f64>().sqrt();
+        let z0 = norm(&z);
+        let stop = (eta * z0).max(abs_floor);
+        let mut p = z.clone();
+        let mut rz: f64 = r.iter().zip(&z).map(|(a, b)| a * b).sum();
+        let mut hp = vec![0.0; nd];
+        let mut its = 0;
+        while norm(&z) > stop && its < self.p.config.max_cg() {
+            self.h_apply(dofs, diag_d, &p, &mut hp);
+            let php: f64 = p.iter().zip(&hp).map(|(a, b)| a * b).sum();
+            if php.is_nan() || php <= 0.0 {
+                return Err(Error::NotPositiveDefinite { index: its });
+            }
+            let alpha = rz / php;
+            for i in 0..nd {
+                x[i] += alpha * p[i];
+                r[i] -= alpha * hp[i];
+            }
+            project(&mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+            let rz_new: f64 = r.iter().zip(&z).map(|(a, b)| a * b).sum();
+            let beta = rz_new / rz;
+            rz = rz_new;
+            for i in 0..nd {
+                p[i] = z[i] + beta * p[i];
+            }
+            its += 1;
+        }
+        // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc), r now M^-1-orthogonal to B.
+        project(&mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
+        Ok((x, lam, its))
+    }
+}
