@@ -41,6 +41,8 @@ impl Dim {
     pub const TIME: Dim = Dim::new(0.0, 0.0, 1.0);
     /// Speed (m/s).
     pub const SPEED: Dim = Dim::new(0.0, 1.0, -1.0);
+    /// Reciprocal length (1/m), e.g. the spin creepage of rolling.
+    pub const PER_LENGTH: Dim = Dim::new(0.0, -1.0, 0.0);
 
     /// The graded modulus E0 of E = E0 y^k: force / length^(2+k).
     pub fn graded_modulus(k: f64) -> Dim {
@@ -140,7 +142,7 @@ pub enum UnitError {
 
 /// The atoms a unit expression may use, for error messages.
 pub const KNOWN_UNITS: &str =
-    "m cm mm um in ft N kN MN lbf kgf Pa kPa MPa GPa psi ksi s ms us min h";
+    "m cm mm um in ft N kN MN lbf kgf Pa kPa MPa GPa psi ksi s ms us min h rad (1/m: a bare 1)";
 
 /// Newtons in one pound-force (exact by definition: 0.45359237 kg x 9.80665 m/s^2).
 pub const LBF: f64 = 0.45359237 * 9.80665;
@@ -155,6 +157,8 @@ fn atom(name: &str) -> Option<(f64, Dim)> {
     let s = Dim::STRESS;
     let t = Dim::TIME;
     Some(match name {
+        // A bare `1` (as in `1/m`) and the radian are pure numbers.
+        "1" | "rad" => (1.0, Dim::NONE),
         "m" => (1.0, l),
         "cm" => (1e-2, l),
         "mm" => (1e-3, l),
@@ -293,6 +297,16 @@ mod tests {
         assert!(rel(parse_quantity("3 ms", Dim::TIME, "time").unwrap(), 3e-3) < 1e-15);
         assert!(rel(parse_quantity("250um", Dim::LENGTH, "length").unwrap(), 250e-6) < 1e-15);
         assert!(rel(parse_quantity("1.5e-3m", Dim::LENGTH, "length").unwrap(), 1.5e-3) < 1e-15);
+    }
+
+    #[test]
+    fn reciprocal_lengths() {
+        let per_m = |t| parse_quantity(t, Dim::PER_LENGTH, "reciprocal length");
+        assert_eq!(per_m("0.1 1/m").unwrap(), 0.1);
+        assert!(rel(per_m("0.1 1/mm").unwrap(), 100.0) < 1e-15);
+        assert!(rel(per_m("2 rad/m").unwrap(), 2.0) < 1e-15);
+        assert!(matches!(per_m("0.1 m"), Err(UnitError::WrongDimension { .. })));
+        assert!(matches!(per_m("0.1 2/m"), Err(UnitError::UnknownUnit { .. })));
     }
 
     #[test]
