@@ -9,6 +9,7 @@
 //! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid;
 //! * [`fast`]: the fast solver (both traction components free, FFT products);
 //! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]);
+//! * [`rolling`]: 3D steady rolling with creepage and spin (exact, FASTSIM, Polach);
 //! * [`normal`]: normal contact of any surface on a lattice (constrained conjugate
 //!   gradients, free or periodic), whose contact feeds the tangential solvers.
 //!
@@ -24,6 +25,7 @@ pub mod grid;
 pub mod influence;
 pub mod lp;
 pub mod normal;
+pub mod rolling;
 pub mod roughness;
 pub mod solve;
 

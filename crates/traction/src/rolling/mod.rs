@@ -1,0 +1,143 @@
+//! Three-dimensional steady rolling with longitudinal and lateral creepage and spin.
+//!
+//! Conventions (docs/FORMULAS.md, section R3): $x$ is the rolling direction. The contact moves
+//! in $+x$ over both surfaces, so material enters at the leading edge (largest $x$) and leaves
+//! at the trailing edge. The creepages $\xi$ (longitudinal), $\eta$ (lateral) and $\phi$ (spin,
+//! 1/m) give the rigid slip of body 1 over body 2 per unit rolling distance,
+//! $$\mathbf w = (\xi - \phi y,\ \eta + \phi x).$$
+//! $\mathbf q$ is the tangential traction on body 1 and $\mathbf u = \mathbf u_1 - \mathbf u_2$
+//! the difference of the surface displacements ($\mathbf u = K * \mathbf q$ for quasi-identical
+//! bodies). In steady state a surface point crosses the contact at the rolling speed $V$, so
+//! the slip per unit rolling distance is
+//! $$\mathbf s = \mathbf w - \frac{\partial \mathbf u}{\partial x},$$
+//! and Coulomb's law asks $\mathbf s = 0$, $|\mathbf q|\le fp$ (stick) or
+//! $\mathbf q = -fp\,\mathbf s/|\mathbf s|$ (slip). The micro-slip velocity is $V\mathbf s$.
+//! In the small-creepage limit $F_x = -GabC_{11}\xi$ (Kalker's sign).
+//!
+//! - [`SteadyRolling`]: the exact theory on a contact grid (Kalker's boundary-element
+//!   discretisation, solved with FFT products);
+//! - [`fastsim`]: Kalker's simplified theory (FASTSIM);
+//! - [`polach`]: Polach's closed creep-force law (no spin);
+//! - [`kalker`]: Kalker's creepage coefficients $C_{11}, C_{22}, C_{23}$.
+
+mod exact;
+pub mod fastsim;
+mod gmres;
+pub mod kalker;
+pub mod polach;
+
+pub use exact::SteadyRolling;
+
+/// The creepages of a rolling contact.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Creepage {
+    /// Longitudinal creepage $\xi$ (dimensionless).
+    pub longitudinal: f64,
+    /// Lateral creepage $\eta$ (dimensionless).
+    pub lateral: f64,
+    /// Spin creepage $\phi$ (1/m).
+    pub spin: f64,
+}
+
+impl Creepage {
+    /// The rigid slip $\mathbf w$ at $(x, y)$.
+    #[must_use]
+    pub fn rigid_slip(&self, x: f64, y: f64) -> [f64; 2] {
+        [self.longitudinal - self.spin * y, self.lateral + self.spin * x]
+    }
+
+    pub(crate) fn validate(&self) -> crate::Result<()> {
+        for (name, v) in [
+            ("longitudinal creepage", self.longitudinal),
+            ("lateral creepage", self.lateral),
+            ("spin creepage", self.spin),
+        ] {
+            if !v.is_finite() {
+                return Err(crate::Error::OutOfDomain { name, value: v, allowed: "finite" });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Which theory produced a rolling solution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum RollingMethod {
+    /// The exact theory on the grid ([`SteadyRolling`]).
+    Exact,
+    /// Kalker's simplified theory ([`fastsim`]).
+    Fastsim,
+    /// Polach's closed creep-force law ([`polach`]): forces only.
+    Polach,
+}
+
+/// How a rolling solve went.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RollingInfo {
+    /// The theory used.
+    pub method: RollingMethod,
+    /// Outer (slip-area) iterations.
+    pub iterations: usize,
+    /// FFT products (inner linear iterations) in all.
+    pub products: usize,
+    /// Final residual: the largest $|\mathbf q - \Pi(\mathbf q - \mathbf s/D)|$ over the
+    /// elements, relative to the largest traction bound $fp$ ($\Pi$: projection on the
+    /// traction bound, $D$: the element's own slip stiffness); 0 means Coulomb's law holds
+    /// exactly on every element. FASTSIM: 0 (it is exact for its own model).
+    pub residual: f64,
+}
+
+/// The traction, slip and forces of a rolling contact on its grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RollingSolution {
+    /// Element centres, x (m).
+    pub x: Vec<f64>,
+    /// Element centres, y (m).
+    pub y: Vec<f64>,
+    /// Element area (m²).
+    pub element_area: f64,
+    /// Normal pressure (Pa).
+    pub pressure: Vec<f64>,
+    /// Tangential traction on body 1, x (Pa).
+    pub qx: Vec<f64>,
+    /// Tangential traction on body 1, y (Pa).
+    pub qy: Vec<f64>,
+    /// Slip per unit rolling distance, x (dimensionless; the micro-slip velocity over $V$).
+    pub sx: Vec<f64>,
+    /// Slip per unit rolling distance, y.
+    pub sy: Vec<f64>,
+    /// True where the element sticks.
+    pub stick: Vec<bool>,
+    /// Creep force $F_x$ on body 1 (N).
+    pub fx: f64,
+    /// Creep force $F_y$ on body 1 (N).
+    pub fy: f64,
+    /// Spin moment $M_z$ about the contact centre (N m).
+    pub mz: f64,
+    /// Solver report.
+    pub info: RollingInfo,
+}
+
+impl RollingSolution {
+    /// Fill the resultants from the element tractions.
+    pub(crate) fn with_resultants(mut self) -> Self {
+        let a = self.element_area;
+        self.fx = a * self.qx.iter().sum::<f64>();
+        self.fy = a * self.qy.iter().sum::<f64>();
+        self.mz = a
+            * (0..self.x.len())
+                .map(|k| self.x[k] * self.qy[k] - self.y[k] * self.qx[k])
+                .sum::<f64>();
+        self
+    }
+
+    /// Fraction of the contact elements that stick.
+    #[must_use]
+    pub fn stick_fraction(&self) -> f64 {
+        if self.stick.is_empty() {
+            return 0.0;
+        }
+        self.stick.iter().filter(|&&s| s).count() as f64 / self.stick.len() as f64
+    }
+}
