@@ -5,10 +5,11 @@
 //! $\mathbf u = K*\mathbf q$ ([`TensorConvolution`], zero-padded FFT), and the convective
 //! derivative as the upwind difference between an element and its neighbour one cell towards
 //! the leading edge, at which the material was one element length earlier:
-//! $$\mathbf s_I = \mathbf w(x_I + h_x/2, y_I) + \frac{\mathbf u_I - \mathbf u_{I^+}}{h_x}.$$
+//! $$\mathbf s_I = \mathbf w(x_I, y_I) + \frac{\mathbf u_I - \mathbf u_{I^+}}{h_x}.$$
 //! The neighbour $I^+$ may lie outside the contact (carrying no traction, but displaced); the
-//! lattice is extended by those cells. The rigid slip is taken at the midpoint of the
-//! difference, so both terms are centred at the same point.
+//! lattice is extended by those cells. The rigid slip is taken at the element centre (taking
+//! it at the midpoint of the difference instead was tried: the spin coefficient $C_{23}$
+//! then converges more slowly, 5 % high at 40 cells across against 0.6 % here).
 //!
 //! Solution (Kalker's active-set idea, with Krylov inner solves):
 //! 1. classify each element by the trial traction $\mathbf t = \mathbf q - \mathbf s/D$
@@ -242,6 +243,14 @@ impl SteadyRolling {
         self.contact.is_empty()
     }
 
+    /// One slip stiffness for both directions, the mean of the two: the projection in
+    /// $\Phi$ must scale both slip components alike, or its fixed point would tilt the
+    /// traction away from the slip direction.
+    fn d_scalar(&self) -> [f64; 2] {
+        let m = 0.5 * (self.d[0] + self.d[1]);
+        [m, m]
+    }
+
     fn work(&self) -> Work {
         Work {
             qx: vec![0.0; self.n_ext],
@@ -265,7 +274,7 @@ impl SteadyRolling {
     }
 
     fn rigid(&self, creep: &Creepage, k: usize) -> [f64; 2] {
-        creep.rigid_slip(self.contact.x[k] + 0.5 * self.contact.hx, self.contact.y[k])
+        creep.rigid_slip(self.contact.x[k], self.contact.y[k])
     }
 
     /// The slip of every contact element under the tractions `q`.
@@ -449,7 +458,7 @@ impl SteadyRolling {
         }
         self.slip(&mut w, creep, [&qx, &qy], [&mut sx, &mut sy]);
         products += 1;
-        let mut phi_norm = state.linearise(self.d, &g, [&qx, &qy], [&sx, &sy]);
+        let mut phi_norm = state.linearise(self.d_scalar(), &g, [&qx, &qy], [&sx, &sy]);
         residual = state.worst / gmax;
         for iteration in 1..=self.max_iterations {
             if residual <= self.tolerance {
@@ -476,7 +485,7 @@ impl SteadyRolling {
                 self.slip(&mut w, creep, [&qx, &qy], [&mut sx, &mut sy]);
                 products += 1;
                 let mut trial = Newton::new(n);
-                let norm = trial.linearise(self.d, &g, [&qx, &qy], [&sx, &sy]);
+                let norm = trial.linearise(self.d_scalar(), &g, [&qx, &qy], [&sx, &sy]);
                 if norm <= (1.0 - 1e-4 * alpha) * phi_norm {
                     state = trial;
                     phi_norm = norm;
@@ -488,7 +497,7 @@ impl SteadyRolling {
             if !accepted {
                 // Keep the smallest step: the residual is reported honestly either way.
                 let mut trial = Newton::new(n);
-                phi_norm = trial.linearise(self.d, &g, [&qx, &qy], [&sx, &sy]);
+                phi_norm = trial.linearise(self.d_scalar(), &g, [&qx, &qy], [&sx, &sy]);
                 state = trial;
             }
             residual = state.worst / gmax;
@@ -506,7 +515,7 @@ impl SteadyRolling {
     /// $\boldsymbol\delta$ (x components, then y) and the products used.
     fn newton_step(&self, w: &mut Work, state: &Newton, tol: f64) -> (Vec<f64>, usize) {
         let n = self.contact.len();
-        let d = self.d;
+        let d = self.d_scalar();
         let b: Vec<f64> = state.phi.iter().map(|v| -v).collect();
         let mut delta = vec![0.0; 2 * n];
         let mut dxv = vec![0.0; n];
