@@ -208,3 +208,44 @@ fn fastsim_reproduces_the_linear_theory_at_small_creepage() {
             .unwrap();
     assert!((s.fy / (-0.3 * 1e3) - 1.0).abs() < 1e-9);
 }
+
+/// The approximate theories against the exact one over a sweep of shapes and creepages: the
+/// largest force error relative to fN stays within the bounds the planner relies on
+/// (`FASTSIM_FORCE_ERROR`, `POLACH_FORCE_ERROR`).
+#[test]
+fn approximate_theories_stay_within_their_stated_error() {
+    use stickslip_traction::rolling::{polach, FASTSIM_FORCE_ERROR, POLACH_FORCE_ERROR};
+    let nu = 0.28;
+    let f = 0.3;
+    let load = 1e4;
+    let m = material(nu);
+    let (mut worst_fastsim, mut worst_polach) = (0.0f64, 0.0f64);
+    for ab in [0.3, 1.0, 3.0] {
+        let (grid, a, b) = ellipse(ab, 40, load);
+        let p0 = 1.5 * load / (std::f64::consts::PI * a * b);
+        let scale = f * p0 / G;
+        let exact = SteadyRolling::new(&grid, [m, m], f).unwrap().with_tolerance(1e-8).unwrap();
+        let c = (a * b).sqrt();
+        for dir in
+            [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.7, 0.7, 0.0], [0.6, 0.3, 0.5]]
+        {
+            for s in [0.1, 0.3, 0.6, 1.0, 2.0, 5.0] {
+                let creep = Creepage {
+                    longitudinal: dir[0] * s * scale,
+                    lateral: dir[1] * s * scale,
+                    spin: dir[2] * s * scale / c,
+                };
+                let e = exact.solve(&creep).unwrap();
+                let fs = fastsim::solve(&grid, a, b, G, nu, f, &creep).unwrap();
+                worst_fastsim = worst_fastsim.max((fs.fx - e.fx).hypot(fs.fy - e.fy) / (f * load));
+                if dir[2] == 0.0 {
+                    let (px, py) = polach::forces(a, b, G, nu, load, f, &creep).unwrap();
+                    worst_polach = worst_polach.max((px - e.fx).hypot(py - e.fy) / (f * load));
+                }
+            }
+        }
+    }
+    println!("largest force error / fN: FASTSIM {worst_fastsim:.3}, Polach {worst_polach:.3}");
+    assert!(worst_fastsim <= FASTSIM_FORCE_ERROR, "{worst_fastsim}");
+    assert!(worst_polach <= POLACH_FORCE_ERROR, "{worst_polach}");
+}
