@@ -283,11 +283,16 @@ fn cmd_run(
     if let Some(h) = c.indentation {
         let _ = writeln!(t, "  indentation: {h:.6e} m");
     }
-    let _ = writeln!(
-        t,
-        "  forces: tangential = {:.6e} {fu}, moment = {:.6e} {mu}, rolling moment = {:.6e} {mu}",
-        outcome.forces.tangential, outcome.forces.moment, outcome.forces.rolling_moment
-    );
+    let fo = &outcome.forces;
+    if let (Some(fx), Some(fy), Some(mz)) = (fo.fx, fo.fy, fo.mz) {
+        let _ = writeln!(t, "  creep forces: Fx = {fx:.6e} N, Fy = {fy:.6e} N, Mz = {mz:.6e} N m");
+    } else {
+        let _ = writeln!(
+            t,
+            "  forces: tangential = {:.6e} {fu}, moment = {:.6e} {mu}, rolling moment = {:.6e} {mu}",
+            fo.tangential, fo.moment, fo.rolling_moment
+        );
+    }
     let _ = writeln!(t, "  {}", zones_line(&outcome.zones));
     let _ = writeln!(t, "  solver: {}", solver_line(&outcome.solver));
     if out.is_none() {
@@ -333,7 +338,8 @@ fn solver_line(s: &SolverOut) -> String {
             s.elements,
             s.iterations,
             if s.inner_iterations > 0 {
-                format!(" ({} CG)", s.inner_iterations)
+                let what = if s.method.contains("SteadyRolling") { "FFT products" } else { "CG" };
+                format!(" ({} {what})", s.inner_iterations)
             } else {
                 String::new()
             },

@@ -100,14 +100,21 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)
             }
             files.push(("surface.csv".to_string(), std::mem::take(&mut s)));
         }
-        SurfaceOut::Grid { x, y, p, qx, qy, stick, gap } if !x.is_empty() => {
-            // A surface's maps also as (ny, nx) arrays: pressure, tractions, gap, contact.
-            if let Some(gap) = gap {
+        SurfaceOut::Grid { x, y, p, qx, qy, stick, gap, slip_x, slip_y } if !x.is_empty() => {
+            // A surface's and a 3D rolling contact's maps also as (ny, nx) arrays: pressure,
+            // tractions, gap or micro-slip, contact.
+            if gap.is_some() || slip_x.is_some() {
                 let (nx, ny) = (x.len(), y.len());
                 let rows = |m: &Vec<Vec<f64>>| -> Vec<f64> {
                     (0..ny).flat_map(|j| (0..nx).map(move |i| m[i][j])).collect()
                 };
-                for (name, m) in [("p", p), ("qx", qx), ("qy", qy), ("gap", gap)] {
+                let mut maps = vec![("p", p), ("qx", qx), ("qy", qy)];
+                for (name, m) in [("gap", gap), ("slip_x", slip_x), ("slip_y", slip_y)] {
+                    if let Some(m) = m {
+                        maps.push((name, m));
+                    }
+                }
+                for (name, m) in maps {
                     binary.push((format!("surface_{name}.npy"), npy(&rows(m), &[ny, nx])));
                 }
                 let stick_f: Vec<f64> =
@@ -116,15 +123,20 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)
                 binary.push(("surface_x.npy".to_string(), npy(x, &[nx])));
                 binary.push(("surface_y.npy".to_string(), npy(y, &[ny])));
             }
-            s.push_str("x_m,y_m,p_Pa,qx_Pa,qy_Pa,stick\n");
+            s.push_str("x_m,y_m,p_Pa,qx_Pa,qy_Pa,stick");
+            s.push_str(if slip_x.is_some() { ",slip_x_m_per_s,slip_y_m_per_s\n" } else { "\n" });
             for (i, xi) in x.iter().enumerate() {
                 for (j, yj) in y.iter().enumerate() {
                     if stick[i][j] >= 0 {
-                        let _ = writeln!(
+                        let _ = write!(
                             s,
                             "{xi},{yj},{},{},{},{}",
                             p[i][j], qx[i][j], qy[i][j], stick[i][j]
                         );
+                        if let (Some(sx), Some(sy)) = (slip_x, slip_y) {
+                            let _ = write!(s, ",{},{}", sx[i][j], sy[i][j]);
+                        }
+                        s.push('\n');
                     }
                 }
             }

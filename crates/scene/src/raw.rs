@@ -129,6 +129,15 @@ pub(crate) struct RawMotion {
     pub kind: Spanned<String>,
     pub speed: Option<SQty>,
     pub creep: Option<Spanned<f64>>,
+    pub creepage: Option<Spanned<RawCreepage>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawCreepage {
+    pub longitudinal: Option<Spanned<f64>>,
+    pub lateral: Option<Spanned<f64>>,
+    pub spin: Option<SQty>,
 }
 
 #[derive(Debug, Deserialize)]

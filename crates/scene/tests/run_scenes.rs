@@ -416,6 +416,49 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             expect("approach (Hertz)", c.indentation.unwrap(), a * a / r, 0.005);
             assert!(out.zones.grid.unwrap().stick > 0 && out.audit.passed);
         }
+        "wheel_rail_creepage_spin.toml" | "wheel_rail_fastsim.toml" => {
+            // The scene's theory against the other one on the same Hertz grid: the exact
+            // theory and FASTSIM differ by at most FASTSIM's measured force error (0.1 fN).
+            use stickslip_traction::rolling::{
+                fastsim, Creepage, SteadyRolling, FASTSIM_FORCE_ERROR,
+            };
+            let stickslip_scene::Motion::RollingCreepage { longitudinal, lateral, spin, .. } =
+                scene.motion
+            else {
+                panic!("3D rolling expected")
+            };
+            let creep = Creepage { longitudinal, lateral, spin };
+            let nu = 0.28;
+            let m = stickslip_halfspace::Material::new(210e9, nu).unwrap();
+            let g = m.shear_modulus();
+            let n = scene.solver.grid;
+            let (a, b) = (c.a, c.b);
+            let h = 2.0 * a.max(b) / n as f64;
+            let grid = stickslip_traction::ContactGrid::hertz_ellipse(
+                a,
+                b,
+                c.normal_load,
+                (2.0 * a / h).round() as usize,
+                (2.0 * b / h).round() as usize,
+            )
+            .unwrap();
+            let other = if name == "wheel_rail_fastsim.toml" {
+                SteadyRolling::new(&grid, [m, m], 0.3).unwrap().solve(&creep).unwrap()
+            } else {
+                fastsim::solve(&grid, a, b, g, nu, 0.3, &creep).unwrap()
+            };
+            let (fx, fy) = (out.forces.fx.unwrap(), out.forces.fy.unwrap());
+            let fnorm = 0.3 * c.normal_load;
+            let diff = (fx - other.fx).hypot(fy - other.fy) / fnorm;
+            report.borrow_mut().push(format!(
+                "{name}: F = ({fx:.6e}, {fy:.6e}) N vs the other theory ({:.6e}, {:.6e}) N: {diff:.3} fN",
+                other.fx, other.fy
+            ));
+            assert!(diff <= FASTSIM_FORCE_ERROR, "{name}: {diff}");
+            assert!(fx.hypot(fy) < fnorm && out.audit.passed);
+            let z = out.zones.grid.unwrap();
+            assert!(z.stick > 0 && z.slip > 0, "{z:?}");
+        }
         other => panic!("no check for scene {other}: add one"),
     }
     report.into_inner()

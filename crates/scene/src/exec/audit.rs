@@ -17,7 +17,9 @@
 
 use super::outcome::{Audit, Check, Outcome, SurfaceOut};
 use super::Ctx;
-use crate::plan::recipe::{ContactRecipe, GridStep, Recipe, RollingModel, Tangential};
+use crate::plan::recipe::{
+    ContactRecipe, GridStep, Recipe, RollingMethod, RollingModel, RollingStep, Tangential,
+};
 use crate::plan::Plan;
 
 /// How far the lattice's total normal force may be from the applied one: a lattice of
@@ -52,6 +54,13 @@ fn limits(plan: &Plan) -> (f64, Option<f64>) {
     match &plan.recipe {
         Recipe::Contact(ContactRecipe {
             tangential: Some(Tangential::Grid(GridStep { tolerance, .. })),
+            ..
+        }) => (tolerance.max(1e-9), Some(*tolerance)),
+        Recipe::Contact(ContactRecipe {
+            tangential:
+                Some(Tangential::Rolling(RollingStep {
+                    method: RollingMethod::Exact, tolerance, ..
+                })),
             ..
         }) => (tolerance.max(1e-9), Some(*tolerance)),
         Recipe::Rolling(r) => match r.model {
@@ -156,11 +165,29 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
                 LATTICE_AREA_TOLERANCE,
                 "|lattice normal force - P| / P",
             );
-            if f > 0.0 && (out.forces.tangential != 0.0 || out.forces.moment != 0.0 || sx != 0.0) {
+            let distribution = !matches!(
+                plan.recipe,
+                Recipe::Contact(ContactRecipe {
+                    tangential: Some(Tangential::Rolling(RollingStep {
+                        method: RollingMethod::Polach,
+                        ..
+                    })),
+                    ..
+                })
+            );
+            if distribution
+                && f > 0.0
+                && (out.forces.tangential != 0.0 || out.forces.moment != 0.0 || sx != 0.0)
+            {
                 let cap = f * c.normal_load;
                 let t = out.forces.tangential;
                 let (ex, ey) = grid_direction(plan);
-                let (tx, ty) = (t * ex, t * ey);
+                // 3D rolling reports the creep force as (fx, fy); otherwise T along its
+                // direction.
+                let (tx, ty) = match (out.forces.fx, out.forces.fy) {
+                    (Some(fx), Some(fy)) => (fx, fy),
+                    _ => (t * ex, t * ey),
+                };
                 let err = (sx * area - tx).hypot(sy * area - ty) / cap;
                 b.at_most(
                     "tangential resultant",
@@ -179,11 +206,13 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
                     }
                 }
                 let spin = if sp > 0.0 { f * c.normal_load * rbar / sp } else { 1.0 };
-                // With a force alone the moment is not prescribed (no rotation is imposed).
-                if out.forces.moment != 0.0 {
+                // With a force alone the moment is not prescribed (no rotation is imposed);
+                // 3D rolling reports its spin moment mz.
+                let moment = out.forces.mz.unwrap_or(out.forces.moment);
+                if moment != 0.0 {
                     b.at_most(
                         "moment resultant",
-                        (mz * area - out.forces.moment).abs() / spin,
+                        (mz * area - moment).abs() / spin,
                         coulomb_limit + f64::max(normal_error, 1e-12),
                         "|lattice moment about the centre of pressure - M| / (f P r_mean)",
                     );

@@ -166,6 +166,8 @@ pub(crate) struct TangentialOut {
     pub rigid: RigidOut,
     /// Stick and slip zones.
     pub zones: Zones,
+    /// 3D rolling: the creep forces and spin moment (fx, fy, mz).
+    pub creep: Option<[f64; 3]>,
 }
 
 /// No tangential stage: every contact cell sticks when friction can act, slips otherwise.
@@ -178,6 +180,7 @@ pub(crate) fn none(lat: &mut Lattice, friction: f64) -> TangentialOut {
         }
     }
     TangentialOut {
+        creep: None,
         tangential: 0.0,
         moment: 0.0,
         rigid: RigidOut { tangential: None, rotation: None, per_body: None },
@@ -206,6 +209,7 @@ pub(crate) fn sliding(
         }
     }
     TangentialOut {
+        creep: None,
         tangential: f * load,
         moment: 0.0,
         rigid: RigidOut { tangential: None, rotation: None, per_body: None },
@@ -292,6 +296,7 @@ pub(crate) fn mindlin(
     }
     let d = [m.compliance_per_body(&r.bodies[0]), m.compliance_per_body(&r.bodies[1])];
     Ok(TangentialOut {
+        creep: None,
         zones: Zones {
             stick: vec![[0.0, astar]],
             slip: vec![[astar, n.ax]],
@@ -338,6 +343,7 @@ pub(crate) fn cattaneo(
     }
     let d = [m.compliance_per_body(&r.bodies[0]), m.compliance_per_body(&r.bodies[1])];
     Ok(TangentialOut {
+        creep: None,
         zones: Zones {
             stick: vec![[-sc * al, sc * al]],
             slip: vec![[-al, -sc * al], [sc * al, al]],
@@ -352,6 +358,7 @@ pub(crate) fn cattaneo(
 /// rigid shift `d` per body (their sum relative), zones to be filled in.
 fn shifted(force: Force, d: [f64; 2]) -> TangentialOut {
     TangentialOut {
+        creep: None,
         tangential: force.signed,
         moment: 0.0,
         rigid: RigidOut { tangential: Some(d[0] + d[1]), rotation: None, per_body: Some(d) },

@@ -121,6 +121,7 @@ pub(crate) fn solve(
     };
     cx.notes.push(note);
     Ok(TangentialOut {
+        creep: None,
         tangential: force.map_or(0.0, |f| f.signed),
         moment: moment.unwrap_or(0.0),
         rigid: RigidOut {

@@ -16,6 +16,8 @@ pub(crate) struct Lattice {
     pub qy: Vec<Vec<f64>>,
     /// 1 stick, 0 slip, -1 outside the contact.
     pub stick: Vec<Vec<i8>>,
+    /// 3D rolling: micro-slip velocity (x, y) per cell (m/s).
+    pub slip: Option<[Vec<Vec<f64>>; 2]>,
 }
 
 impl Lattice {
@@ -28,6 +30,7 @@ impl Lattice {
             qx: vec![vec![0.0; ny]; nx],
             qy: vec![vec![0.0; ny]; nx],
             stick: vec![vec![-1; ny]; nx],
+            slip: None,
         }
     }
 
@@ -48,7 +51,13 @@ impl Lattice {
 
     /// The lattice arrays as result.json's `surface`, with a surface's gap map.
     pub fn into_surface(self, gap: Option<Vec<Vec<f64>>>) -> SurfaceOut {
+        let (slip_x, slip_y) = match self.slip {
+            Some([sx, sy]) => (Some(sx), Some(sy)),
+            None => (None, None),
+        };
         SurfaceOut::Grid {
+            slip_x,
+            slip_y,
             x: self.x,
             y: self.y,
             p: self.p,

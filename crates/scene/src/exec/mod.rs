@@ -7,7 +7,7 @@
 //! |---|---|
 //! | [`Recipe::Line`] | `normal` (2D) → `friction` (2D traction) → `surface` → `field` |
 //! | [`Recipe::Rolling`] | `rolling` (normal and tangential together) |
-//! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) → `cycle` |
+//! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) or `roll3d` (3D steady rolling: exact, FASTSIM, Polach) → `cycle` → `field` |
 //!
 //! Every stage increments the evaluation counter of the effects it computes
 //! ([`Evaluations`]), so a test can prove that an effect that is off costs nothing. Adding a
@@ -27,6 +27,7 @@ pub(crate) mod outcome;
 
 pub use audit::{LATTICE_AREA_TOLERANCE, SAMPLING_TOLERANCE};
 pub(crate) use lattice::grid_patches;
+mod roll3d;
 mod rolling;
 mod surface;
 mod twist;
@@ -240,6 +241,9 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
             tangential: t.tangential,
             moment: 0.0,
             rolling_moment: 0.0,
+            fx: None,
+            fy: None,
+            mz: None,
         },
         rigid: RigidOut { tangential: rigid, rotation: None, per_body: None },
         surface,
@@ -267,6 +271,7 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         Some(Tangential::Grid(g)) => {
             grid::solve(&mut lat, r, &n, g.method, g.force, g.direction, g.moment, g.tolerance, cx)?
         }
+        Some(Tangential::Rolling(step)) => roll3d::solve(&mut lat, r, &n, &step, cx)?,
     };
     let cycle = match r.cycle {
         Some(c) => Some(cycle::run(c, r, &n, cx)?),
@@ -292,6 +297,9 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
             tangential: t.tangential,
             moment: t.moment,
             rolling_moment: 0.0,
+            fx: t.creep.map(|c| c[0]),
+            fy: t.creep.map(|c| c[1]),
+            mz: t.creep.map(|c| c[2]),
         },
         rigid: t.rigid,
         surface: if r.lattice_output {

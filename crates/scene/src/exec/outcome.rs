@@ -150,6 +150,15 @@ pub struct Forces {
     pub moment: f64,
     /// Rolling-friction moment.
     pub rolling_moment: f64,
+    /// 3D rolling: creep force along x on body 1 (the indenter; N); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fx: Option<f64>,
+    /// 3D rolling: creep force along y on body 1 (N).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fy: Option<f64>,
+    /// 3D rolling: spin moment about the contact normal through the contact centre (N m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mz: Option<f64>,
 }
 
 /// `rigid_displacement` in result.json.
@@ -204,6 +213,13 @@ pub enum SurfaceOut {
         /// A surface's gap after loading (m), every cell; absent otherwise.
         #[serde(skip_serializing_if = "Option::is_none")]
         gap: Option<Vec<Vec<f64>>>,
+        /// 3D rolling: micro-slip velocity of body 1 over body 2 along x (m/s), 0 where the
+        /// surface sticks or outside the contact; absent otherwise.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        slip_x: Option<Vec<Vec<f64>>>,
+        /// 3D rolling: micro-slip velocity along y (m/s).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        slip_y: Option<Vec<Vec<f64>>>,
     },
 }
 

@@ -124,7 +124,15 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
             fraction: None,
         },
         zones,
-        forces: Forces { normal: load, tangential: q, moment: 0.0, rolling_moment: mstar },
+        forces: Forces {
+            normal: load,
+            tangential: q,
+            moment: 0.0,
+            rolling_moment: mstar,
+            fx: None,
+            fy: None,
+            mz: None,
+        },
         rigid: RigidOut { tangential: None, rotation: None, per_body: None },
         surface: SurfaceOut::Line {
             x: xs,

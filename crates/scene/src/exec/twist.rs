@@ -69,6 +69,7 @@ pub(crate) fn lubkin(
     let [sub, ind] = &r.bodies;
     let w = [m.rotation_per_body(sub), m.rotation_per_body(ind)];
     Ok(TangentialOut {
+        creep: None,
         tangential: 0.0,
         moment,
         rigid: RigidOut {

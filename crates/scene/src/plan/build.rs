@@ -14,9 +14,10 @@ use stickslip_traction::{FastConfig, ModifiedLp, NormalProblem};
 use super::checks::{self, invalid, tolerance_for};
 use super::cost::{self, lattice_elements};
 use super::recipe::{
-    ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, CycleRecipe, Force, GridMethod,
-    GridStep, LineDisplacements, LineField, LineFieldMethod, LineFriction, LineLoad, LineNormal,
-    LineRecipe, LineSurface, Recipe, RollingModel, RollingRecipe, SurfaceLoad, Tangential,
+    ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, Creepage, CycleRecipe, Force,
+    GridMethod, GridStep, LineDisplacements, LineField, LineFieldMethod, LineFriction, LineLoad,
+    LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod, RollingModel, RollingRecipe,
+    RollingStep, SurfaceLoad, Tangential,
 };
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
 use crate::error::ErrorKind;
@@ -52,11 +53,11 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
                 "use geometry.kind = \"cylinder\"",
             ))
         }
-        (Geometry::Sphere { radius }, Motion::Static) => {
+        (Geometry::Sphere { radius }, Motion::Static | Motion::RollingCreepage { .. }) => {
             let (r, reason) = contact_recipe(scene, ContactBody::Sphere(*radius))?;
             (Recipe::Contact(r), Some(reason))
         }
-        (Geometry::Ellipsoid(e), Motion::Static) => {
+        (Geometry::Ellipsoid(e), Motion::Static | Motion::RollingCreepage { .. }) => {
             let (r, reason) = contact_recipe(scene, ContactBody::Ellipsoid(*e))?;
             (Recipe::Contact(r), Some(reason))
         }
@@ -64,9 +65,16 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
             let (r, reason) = contact_recipe(scene, ContactBody::Patches(ps))?;
             (Recipe::Contact(r), Some(reason))
         }
-        (Geometry::Surface(s), Motion::Static) => {
+        (Geometry::Surface(s), Motion::Static | Motion::RollingCreepage { .. }) => {
             let (r, reason) = contact_recipe(scene, ContactBody::Surface(s))?;
             (Recipe::Contact(r), Some(reason))
+        }
+        (_, Motion::RollingCreepage { .. }) => {
+            return Err(checks::unsupported(
+                "geometry.kind",
+                "3D rolling with creepage needs a sphere, an ellipsoid or a surface (a cylinder rolls in 2D: use motion.creep)",
+                "use geometry.kind = \"ellipsoid\" (radii), \"sphere\" or \"surface\"",
+            ))
         }
     };
     let effects = effects(scene, &recipe, &mut notes);
@@ -337,6 +345,81 @@ fn grid_solver(method: Method, elements: usize, both: bool) -> (bool, String) {
     }
 }
 
+/// The 3D steady-rolling step: the theory from `solver.method`, or under `"auto"` from the
+/// tolerance (the accuracy knob): Polach's law when the tolerance admits its measured force
+/// error and there is no spin, FASTSIM when it admits FASTSIM's, else the exact theory.
+fn rolling_step(
+    scene: &Scene,
+    body: ContactBody<'_>,
+    speed: f64,
+    creepage: Creepage,
+) -> Result<Tangential, Issue> {
+    use stickslip_traction::rolling::{FASTSIM_FORCE_ERROR, POLACH_FORCE_ERROR, TOLERANCE_RANGE};
+    let l = &scene.load;
+    if l.friction <= 0.0 {
+        return Err(checks::unsupported(
+            "load.friction",
+            "rolling with creepage needs a friction coefficient: without friction no creep force arises",
+            "give load.friction, e.g. friction = 0.3",
+        ));
+    }
+    if l.tangential != 0.0 || l.moment != 0.0 || l.sliding {
+        return Err(checks::unsupported(
+            "load.tangential",
+            "in steady rolling the creep forces and spin moment follow from the creepages; a tangential load, a moment or sliding cannot also be prescribed",
+            "remove load.tangential, load.moment and load.sliding; set motion.creepage instead",
+        ));
+    }
+    let ellipse = matches!(body, ContactBody::Sphere(_) | ContactBody::Ellipsoid(_));
+    let needs_ellipse = |name: &str| {
+        checks::unsupported(
+            "solver.method",
+            format!("{name} needs a Hertz ellipse (its parameters come from Kalker's coefficients of an elliptical contact)"),
+            "use method = \"auto\" or \"fast\" (the exact theory), which rolls any surface",
+        )
+    };
+    let tol = scene.solver.tolerance;
+    let method = match scene.solver.method {
+        Method::Fastsim if !ellipse => return Err(needs_ellipse("FASTSIM")),
+        Method::Fastsim => RollingMethod::Fastsim,
+        Method::Polach if !ellipse => return Err(needs_ellipse("Polach's law")),
+        Method::Polach if creepage.spin != 0.0 => {
+            return Err(checks::unsupported(
+                "motion.creepage.spin",
+                "Polach's creep-force law has no spin",
+                "use method = \"fastsim\" or \"auto\", or remove the spin",
+            ))
+        }
+        Method::Polach => RollingMethod::Polach,
+        Method::Fast => RollingMethod::Exact,
+        Method::Auto if ellipse && creepage.spin == 0.0 && tol >= POLACH_FORCE_ERROR => {
+            RollingMethod::Polach
+        }
+        Method::Auto if ellipse && tol >= FASTSIM_FORCE_ERROR => RollingMethod::Fastsim,
+        Method::Auto => RollingMethod::Exact,
+        _ => {
+            return Err(checks::unsupported(
+                "solver.method",
+                "3D rolling is solved by the exact theory (\"fast\"), FASTSIM (\"fastsim\") or Polach's law (\"polach\")",
+                "use method = \"auto\"",
+            ))
+        }
+    };
+    if method == RollingMethod::Polach && scene.outputs.field.is_some() {
+        return Err(checks::unsupported(
+            "outputs.field",
+            "Polach's law gives forces only, no traction distribution to compute stresses from",
+            "use method = \"fastsim\" or \"fast\" for subsurface stresses under rolling",
+        ));
+    }
+    let tolerance = if method == RollingMethod::Exact {
+        tolerance_for(scene, "the exact steady-rolling solver", TOLERANCE_RANGE)?
+    } else {
+        tol
+    };
+    Ok(Tangential::Rolling(RollingStep { method, creepage, speed, tolerance }))
+}
+
 /// The body of a 3D contact.
 #[derive(Clone, Copy)]
 enum ContactBody<'a> {
@@ -417,7 +500,15 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
         };
         Ok(Tangential::Grid(GridStep { method, force, direction, moment, tolerance }))
     };
-    let tangential = if f > 0.0 && (l.tangential != 0.0 || l.sliding || l.moment != 0.0) {
+    let rolling = match scene.motion {
+        Motion::RollingCreepage { speed, longitudinal, lateral, spin } => {
+            Some(rolling_step(scene, body, speed, Creepage { longitudinal, lateral, spin })?)
+        }
+        _ => None,
+    };
+    let tangential = if rolling.is_some() {
+        rolling
+    } else if f > 0.0 && (l.tangential != 0.0 || l.sliding || l.moment != 0.0) {
         Some(if l.sliding {
             Tangential::Sliding { angle: l.direction_deg.to_radians() }
         } else if l.tangential == 0.0 {
@@ -445,7 +536,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
         None
     };
     let lattice_output = scene.outputs.surface
-        || matches!(tangential, Some(Tangential::Grid(_)))
+        || matches!(tangential, Some(Tangential::Grid(_) | Tangential::Rolling(_)))
         || scene.outputs.field.is_some();
     let cycle =
         scene.outputs.cycle.map(|c| CycleRecipe { amplitude: c.amplitude, points: c.points });
@@ -591,6 +682,11 @@ impl Tangential {
             Tangential::Mindlin { .. } => Technique::Mindlin,
             Tangential::Cattaneo { .. } => Technique::Cattaneo,
             Tangential::Lubkin { .. } => Technique::Lubkin,
+            Tangential::Rolling(r) => match r.method {
+                RollingMethod::Fastsim => Technique::Fastsim,
+                RollingMethod::Polach => Technique::Polach,
+                _ => Technique::SteadyRolling,
+            },
             Tangential::Grid(GridStep { method: GridMethod::Fast, .. }) => Technique::Fast,
             Tangential::Grid(GridStep { method: GridMethod::Lp, force: None, .. }) => {
                 Technique::LpMoment
@@ -613,7 +709,7 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
     let mut effects: Vec<EffectPlan> = Vec::with_capacity(8);
     effects.push(on(E::NormalContact, "always".to_string(), recipe.normal_technique()));
 
-    let rolling = matches!(scene.motion, Motion::Rolling { .. });
+    let rolling = matches!(scene.motion, Motion::Rolling { .. } | Motion::RollingCreepage { .. });
     let f = l.friction;
     let friction_cause = if l.tangential != 0.0 {
         Some("a tangential load")
@@ -681,6 +777,25 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
             format!("rolling at w = {speed} m/s, creep {creep}"),
             r.model.technique(),
         )),
+        (
+            Recipe::Contact(ContactRecipe { tangential: Some(t @ Tangential::Rolling(r)), .. }),
+            Motion::RollingCreepage { speed, longitudinal, lateral, spin },
+        ) => {
+            let why = match (scene.solver.method, r.method) {
+                (Method::Auto, RollingMethod::Exact) => format!("the exact theory: solver.tolerance = {:e} is below FASTSIM's force error (0.1 fN)", scene.solver.tolerance),
+                (Method::Auto, RollingMethod::Fastsim) => format!("FASTSIM: solver.tolerance = {} admits its force error (up to 0.1 fN)", scene.solver.tolerance),
+                (Method::Auto, _) => format!("Polach's law: solver.tolerance = {} admits its force error (up to 0.15 fN) and there is no spin", scene.solver.tolerance),
+                _ => format!("solver.method = {:?}", r.method),
+            };
+            effects.push(on(
+                E::Rolling,
+                format!("3D steady rolling at V = {speed} m/s, creepages xi = {longitudinal}, eta = {lateral}, spin = {spin} 1/m; {why}"),
+                t.technique(),
+            ));
+            if !identical_materials(scene) {
+                notes.push("3D rolling treats the bodies as quasi-identical: the normal-tangential coupling (Dundurs beta) is neglected".to_string());
+            }
+        }
         _ => effects.push(off(E::Rolling, "motion is static".to_string())),
     }
 

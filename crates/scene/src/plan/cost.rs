@@ -26,6 +26,7 @@ pub(crate) fn estimate(
     let grid_elements = elements;
     let lp = effects.iter().any(|e| matches!(e.technique, Some(T::LpForce | T::LpMoment)));
     let fast = effects.iter().any(|e| e.technique == Some(T::Fast));
+    let steady = effects.iter().any(|e| e.technique == Some(T::SteadyRolling));
     if lp && grid_elements > MAX_LP_ELEMENTS {
         return Err(issue(
             ErrorKind::OutOfRange,
@@ -37,7 +38,7 @@ pub(crate) fn estimate(
     let cells = if two_d { 0 } else { lattice_cells(scene) };
     // Memory of the 3D lattice arrays (result, JSON and CSV text) and of the fast solver.
     let grid_memory = cells as u64 * OUTPUT_BYTES_PER_CELL
-        + if fast { fast_memory(cells, grid_elements) } else { 0 };
+        + if fast || steady { fast_memory(cells, grid_elements) } else { 0 };
     if grid_memory > MEMORY_LIMIT_BYTES {
         let side = scene.solver.grid;
         let max_side =
@@ -112,6 +113,14 @@ pub(crate) fn estimate(
             evals += n * n * 4;
             secs += (n * n) as f64 * 2e-7 + (n * n * n) as f64 * 2e-9;
             mem += lp_memory(grid_elements);
+        } else if steady {
+            // Exact steady rolling: a few Newton steps of tens of GMRES products each, one
+            // FFT product per GMRES step. Measured (2 cores, tolerance 1e-8, ellipse with
+            // creepage and spin): 1,264 elements 0.04-0.1 s, 7,860 elements 0.2-0.4 s,
+            // 31,428 elements 1.5-4 s, i.e. about 300 products of 1e-7 s per cell of the
+            // padded lattice.
+            evals += n * 300;
+            secs += 300.0 * 1e-7 * (4 * cells) as f64;
         } else if fast {
             // Each Newton step takes tens of CG iterations, one FFT product each; the count
             // grows slowly with the grid (measured: see fast_seconds).

@@ -164,11 +164,18 @@ pub enum Technique {
     /// Subsurface stresses of a lattice traction by FFT per depth layer with the exact
     /// uniform-rectangle stresses (FORMULAS.md F): `stickslip_traction::field`.
     LatticeField,
+    /// Exact 3D steady rolling with creepage and spin (Kalker's boundary-element theory, FFT
+    /// products, semismooth Newton): `stickslip_traction::rolling::SteadyRolling`.
+    SteadyRolling,
+    /// Kalker's simplified theory: `stickslip_traction::rolling::fastsim`.
+    Fastsim,
+    /// Polach's creep-force law: `stickslip_traction::rolling::polach`.
+    Polach,
 }
 
 impl Technique {
     /// Every technique, in the order of declaration.
-    pub const ALL: [Technique; 25] = [
+    pub const ALL: [Technique; 28] = [
         Technique::HertzLine,
         Technique::GradedCylinder,
         Technique::FlatPunch,
@@ -194,6 +201,9 @@ impl Technique {
         Technique::HertzSphereField,
         Technique::LatticeField,
         Technique::SurfaceContact,
+        Technique::SteadyRolling,
+        Technique::Fastsim,
+        Technique::Polach,
     ];
 
     /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
@@ -225,6 +235,9 @@ impl Technique {
             Technique::HertzSphereField => 22,
             Technique::LatticeField => 23,
             Technique::SurfaceContact => 24,
+            Technique::SteadyRolling => 25,
+            Technique::Fastsim => 26,
+            Technique::Polach => 27,
         }
     }
 
@@ -241,6 +254,8 @@ impl Technique {
                 | Technique::StressQuadrature
                 | Technique::LatticeField
                 | Technique::SurfaceContact
+                | Technique::SteadyRolling
+                | Technique::Fastsim
         )
     }
 
@@ -291,6 +306,15 @@ impl Technique {
             }
             Technique::LatticeField => {
                 "lattice traction by FFT per depth layer with exact rectangle stresses (FORMULAS.md F), interpolated to the box, numerical"
+            }
+            Technique::SteadyRolling => {
+                "exact steady rolling on the grid: Kalker's discretisation, FFT products, semismooth Newton with GMRES (FORMULAS.md R3), numerical"
+            }
+            Technique::Fastsim => {
+                "FASTSIM, Kalker's simplified theory with one flexibility per creepage term from Kalker's C11, C22, C23 (FORMULAS.md R3); force error up to 0.1 fN against the exact theory"
+            }
+            Technique::Polach => {
+                "Polach's closed creep-force law (no spin; FORMULAS.md R3); force error up to 0.15 fN against the exact theory"
             }
         }
     }

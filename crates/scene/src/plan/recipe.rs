@@ -11,6 +11,7 @@
 use stickslip_graded::{Accuracy, GradedMaterial};
 use stickslip_halfspace::Material;
 use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
+pub use stickslip_traction::rolling::{Creepage, RollingMethod};
 
 use crate::scene::{FieldGrid, Patch};
 
@@ -319,6 +320,21 @@ pub enum Tangential {
     },
     /// A grid solver through the traction crate's contract.
     Grid(GridStep),
+    /// 3D steady rolling with creepage and spin.
+    Rolling(RollingStep),
+}
+
+/// A 3D steady-rolling step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RollingStep {
+    /// The theory: exact, FASTSIM or Polach.
+    pub method: RollingMethod,
+    /// The creepages.
+    pub creepage: Creepage,
+    /// Rolling speed V (m/s): the micro-slip velocity is V times the slip.
+    pub speed: f64,
+    /// Relative tolerance of the exact solver's residual (unused by FASTSIM and Polach).
+    pub tolerance: f64,
 }
 
 /// Which grid solver.

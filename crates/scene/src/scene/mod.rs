@@ -348,6 +348,17 @@ pub enum Motion {
         /// Creep delta = (omega R - w) / w.
         creep: f64,
     },
+    /// Steady 3D rolling with longitudinal and lateral creepage and spin.
+    RollingCreepage {
+        /// Speed V (m/s), > 0.
+        speed: f64,
+        /// Longitudinal creepage xi (dimensionless).
+        longitudinal: f64,
+        /// Lateral creepage eta (dimensionless).
+        lateral: f64,
+        /// Spin creepage phi (1/m).
+        spin: f64,
+    },
 }
 
 /// A subsurface grid, in units of `scale`: in 2D x and depth y; in 3D a box of x, y and
@@ -409,8 +420,12 @@ pub enum Method {
     Quadrature,
     /// The modified LP (seed 002).
     Lp,
-    /// The fast FFT solver.
+    /// The fast FFT solver (in 3D rolling: the exact theory with FFT products).
     Fast,
+    /// 3D rolling: Kalker's simplified theory (FASTSIM).
+    Fastsim,
+    /// 3D rolling: Polach's closed creep-force law (forces only, no spin).
+    Polach,
 }
 
 /// Solver options.

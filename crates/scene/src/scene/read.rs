@@ -431,6 +431,45 @@ fn motion(cx: &Reader<'_>, raw: &RawScene) -> Result<Motion, SceneError> {
                 "the rolling speed w, e.g. speed = \"10 cm/s\"",
             )?;
             let speed = cx.qty(sp, "motion.speed", Dim::SPEED, "speed")?;
+            if let Some(cr) = &mr.creepage {
+                if let Some(c) = &mr.creep {
+                    return Err(cx
+                        .err(
+                            ErrorKind::Schema,
+                            "motion.creep",
+                            Some(c.span()),
+                            "both `creep` and `creepage` are given",
+                        )
+                        .hint("`creep` is the 2D creep ratio of a rolling cylinder; `creepage = { longitudinal, lateral, spin }` is for 3D rolling: give one"));
+                }
+                cx.record("motion.creepage", cr.span());
+                let c = cr.get_ref();
+                let longitudinal = c
+                    .longitudinal
+                    .as_ref()
+                    .map_or(0.0, |v| cx.num(v, "motion.creepage.longitudinal"));
+                let lateral =
+                    c.lateral.as_ref().map_or(0.0, |v| cx.num(v, "motion.creepage.lateral"));
+                let spin = match &c.spin {
+                    None => 0.0,
+                    Some(s) => {
+                        if let Qty::Num(v) = s.get_ref() {
+                            if *v != 0.0 {
+                                return Err(cx
+                                    .err(
+                                        ErrorKind::Unit,
+                                        "motion.creepage.spin",
+                                        Some(s.span()),
+                                        format!("the spin creepage {v} has no unit"),
+                                    )
+                                    .hint("spin is a reciprocal length: write it with its unit, e.g. spin = \"0.1 1/m\" or \"0.1 rad/m\""));
+                            }
+                        }
+                        cx.qty(s, "motion.creepage.spin", Dim::PER_LENGTH, "reciprocal length")?
+                    }
+                };
+                return Ok(Motion::RollingCreepage { speed, longitudinal, lateral, spin });
+            }
             let creep = mr.creep.as_ref().map_or(0.0, |c| cx.num(c, "motion.creep"));
             Motion::Rolling { speed, creep }
         }
@@ -524,12 +563,14 @@ fn solver(cx: &Reader<'_>, s: Option<&crate::raw::RawSolver>) -> Result<SolverOp
         out.method = match cx.choice(
             m,
             "solver.method",
-            &["auto", "closed-form", "quadrature", "lp", "fast"],
+            &["auto", "closed-form", "quadrature", "lp", "fast", "fastsim", "polach"],
         )? {
             "auto" => Method::Auto,
             "closed-form" => Method::ClosedForm,
             "quadrature" => Method::Quadrature,
             "lp" => Method::Lp,
+            "fastsim" => Method::Fastsim,
+            "polach" => Method::Polach,
             _ => Method::Fast,
         };
     }

@@ -360,6 +360,19 @@ fn load(scene: &Scene) -> Result<(), Issue> {
 }
 
 fn motion(scene: &Scene) -> Result<(), Issue> {
+    if let Motion::RollingCreepage { speed, longitudinal, lateral, spin } = scene.motion {
+        positive("motion.speed", speed, "speed")?;
+        for (key, v) in [
+            ("motion.creepage.longitudinal", longitudinal),
+            ("motion.creepage.lateral", lateral),
+            ("motion.creepage.spin", spin),
+        ] {
+            if !v.is_finite() || v.abs() > 1e6 {
+                return Err(Issue::new(ErrorKind::OutOfRange, key, format!("creepage {v} is not a finite number of sensible size"))
+                    .hint("creepages are small numbers (1e-4 to 1e-2 in wheel-rail contact; spin in 1/m); larger ones mean full slip and are still solved"));
+            }
+        }
+    }
     if let Motion::Rolling { speed, creep } = scene.motion {
         positive("motion.speed", speed, "speed")?;
         if !creep.is_finite() {

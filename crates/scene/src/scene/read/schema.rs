@@ -155,6 +155,15 @@ static MOTION: Table = Table {
         req("kind", Kind::Str(&["static", "rolling"])),
         f("speed", Kind::Qty("\"10 cm/s\"")),
         f("creep", Kind::Num),
+        f("creepage", Kind::Table(&CREEPAGE)),
+    ],
+};
+
+static CREEPAGE: Table = Table {
+    fields: &[
+        f("longitudinal", Kind::Num),
+        f("lateral", Kind::Num),
+        f("spin", Kind::Qty("\"0.1 1/m\"")),
     ],
 };
 
@@ -180,7 +189,10 @@ static OUTPUTS: Table = Table {
 
 static SOLVER: Table = Table {
     fields: &[
-        f("method", Kind::Str(&["auto", "closed-form", "quadrature", "lp", "fast"])),
+        f(
+            "method",
+            Kind::Str(&["auto", "closed-form", "quadrature", "lp", "fast", "fastsim", "polach"]),
+        ),
         f("grid", Kind::Int),
         f("tolerance", Kind::Num),
     ],

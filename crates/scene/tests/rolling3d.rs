@@ -1,0 +1,158 @@
+//! 3D rolling with creepage and spin through the scene: bad input refused with key and
+//! position, full slip solved and said, the accuracy knob choosing the theory, and the
+//! outputs (creep forces, micro-slip maps) consistent with the traction written.
+
+use stickslip_scene::{run, ErrorKind, Plan, RunOptions, Scene, SceneError, SurfaceOut, Technique};
+
+fn wheel(creepage: &str, extra: &str) -> String {
+    format!(
+        r#"[geometry]
+kind = "ellipsoid"
+radii = ["460 mm", "300 mm"]
+[substrate]
+model = "homogeneous"
+e = "210 GPa"
+nu = 0.28
+[indenter]
+model = "same"
+[load]
+normal = "100 kN"
+friction = 0.3
+[motion]
+kind = "rolling"
+speed = "20 m/s"
+creepage = {creepage}
+{extra}"#
+    )
+}
+
+fn refused(text: &str) -> SceneError {
+    Scene::from_toml_str(text, Some("wheel.toml".into())).unwrap_err()
+}
+
+fn assert_refusal(e: &SceneError, kind: ErrorKind, key: &str, line: usize) {
+    assert_eq!(e.kind, kind, "{e}");
+    assert_eq!(e.key.as_deref(), Some(key), "{e}");
+    assert_eq!(e.position.map(|p| p.0), Some(line), "{e}");
+    assert!(e.hint.is_some(), "{e}");
+}
+
+#[test]
+fn bad_rolling_input_is_refused_with_key_and_position() {
+    // Spin without a reciprocal-length unit, or with a length.
+    let e = refused(&wheel("{ longitudinal = 1e-3, spin = 0.1 }", ""));
+    assert_refusal(&e, ErrorKind::Unit, "motion.creepage.spin", 16);
+    assert!(e.hint.as_deref().unwrap().contains("1/m"), "{e}");
+    let e = refused(&wheel("{ spin = \"0.1 m\" }", ""));
+    assert_refusal(&e, ErrorKind::Unit, "motion.creepage.spin", 16);
+    // A non-positive speed.
+    for speed in ["0 m/s", "-3 m/s"] {
+        let e = refused(&wheel("{ longitudinal = 1e-3 }", "").replace("20 m/s", speed));
+        assert_refusal(&e, ErrorKind::OutOfRange, "motion.speed", 15);
+    }
+    // creep and creepage together; a cylinder; no friction; a prescribed tangential load.
+    let e = refused(&wheel("{ longitudinal = 1e-3 }\ncreep = 1e-3", ""));
+    assert_eq!(e.key.as_deref(), Some("motion.creep"), "{e}");
+    let e = refused(
+        &wheel("{ longitudinal = 1e-3 }", "")
+            .replace(
+                "kind = \"ellipsoid\"\nradii = [\"460 mm\", \"300 mm\"]",
+                "kind = \"cylinder\"\nradius = \"460 mm\"",
+            )
+            .replace("normal = \"100 kN\"", "normal = \"100 kN/m\""),
+    );
+    assert_eq!((e.kind, e.key.as_deref()), (ErrorKind::Unsupported, Some("geometry.kind")), "{e}");
+    let e =
+        refused(&wheel("{ longitudinal = 1e-3 }", "").replace("friction = 0.3", "friction = 0.0"));
+    assert_eq!(e.key.as_deref(), Some("load.friction"), "{e}");
+    let e = refused(
+        &wheel("{ longitudinal = 1e-3 }", "")
+            .replace("friction = 0.3", "friction = 0.3\ntangential = \"1 kN\""),
+    );
+    assert_eq!(e.key.as_deref(), Some("load.tangential"), "{e}");
+    // Polach has no spin.
+    let e = refused(&wheel("{ spin = \"0.1 1/m\" }", "[solver]\nmethod = \"polach\""));
+    assert_eq!(e.key.as_deref(), Some("motion.creepage.spin"), "{e}");
+}
+
+/// Creepage far beyond saturation: every element slides, |F| = fN, and the run says so.
+#[test]
+fn full_slip_is_a_result() {
+    let scene = Scene::from_toml_str(&wheel("{ longitudinal = 0.5 }", "[solver]\ngrid = 24"), None)
+        .unwrap();
+    let out = run(&scene, &RunOptions::default()).unwrap();
+    assert_eq!(out.zones.grid.unwrap().stick, 0);
+    let fx = out.forces.fx.unwrap();
+    assert!((fx / (-0.3 * 1e5) - 1.0).abs() < 1e-6, "{fx}");
+    assert!(out.notes.iter().any(|n| n.contains("full slip")), "{:?}", out.notes);
+    assert!(out.audit.passed);
+}
+
+/// solver.tolerance chooses the theory under "auto": the exact one by default, FASTSIM from
+/// its measured error (0.1 fN), Polach from 0.15 fN without spin.
+#[test]
+fn the_tolerance_is_the_accuracy_knob() {
+    let technique = |creepage: &str, tol: &str| {
+        let s =
+            Scene::from_toml_str(&wheel(creepage, &format!("[solver]\ntolerance = {tol}")), None)
+                .unwrap();
+        let plan = Plan::new(&s).unwrap();
+        plan.effects.iter().find(|e| e.effect.name() == "rolling").unwrap().technique.unwrap()
+    };
+    assert_eq!(technique("{ longitudinal = 1e-3 }", "1e-10"), Technique::SteadyRolling);
+    assert_eq!(technique("{ longitudinal = 1e-3 }", "0.12"), Technique::Fastsim);
+    assert_eq!(technique("{ longitudinal = 1e-3 }", "0.2"), Technique::Polach);
+    assert_eq!(technique("{ longitudinal = 1e-3, spin = \"0.1 1/m\" }", "0.2"), Technique::Fastsim);
+}
+
+/// The written arrays: the traction's resultant is the reported creep force, the micro-slip
+/// is V times the slip, zero where the surface sticks (to the residual) and opposite to the traction where it
+/// slips.
+#[test]
+fn outputs_are_consistent() {
+    let scene = Scene::from_toml_str(
+        &wheel(
+            "{ longitudinal = 1e-3, lateral = 5e-4, spin = \"0.3 1/m\" }",
+            "[solver]\ngrid = 40",
+        ),
+        None,
+    )
+    .unwrap();
+    let out = run(&scene, &RunOptions::default()).unwrap();
+    let SurfaceOut::Grid { x, y, p, qx, qy, stick, slip_x: Some(sx), slip_y: Some(sy), .. } =
+        &out.surface
+    else {
+        panic!("3D rolling writes its micro-slip maps")
+    };
+    let area = (x[1] - x[0]) * (y[1] - y[0]);
+    let (mut fx, mut fy) = (0.0, 0.0);
+    let (mut stick_n, mut slip_n) = (0, 0);
+    for i in 0..x.len() {
+        for j in 0..y.len() {
+            fx += qx[i][j] * area;
+            fy += qy[i][j] * area;
+            let s = sx[i][j].hypot(sy[i][j]);
+            match stick[i][j] {
+                1 => {
+                    stick_n += 1;
+                    // Zero to the solver's residual: V times 1e-9 of the creepage.
+                    assert!(s <= 20.0 * 1e-3 * 1e-9, "stick cell ({i}, {j}) slips {s} m/s");
+                }
+                0 => {
+                    slip_n += 1;
+                    let q = qx[i][j].hypot(qy[i][j]);
+                    if s > 0.0 && q > 0.0 {
+                        let cos = -(qx[i][j] * sx[i][j] + qy[i][j] * sy[i][j]) / (q * s);
+                        assert!(cos > 1.0 - 1e-6, "cell ({i}, {j}): {cos}");
+                        assert!((q - 0.3 * p[i][j]).abs() <= 1e-8 * 0.3 * out.contact.p0);
+                    }
+                }
+                _ => assert_eq!((qx[i][j], qy[i][j], s), (0.0, 0.0, 0.0)),
+            }
+        }
+    }
+    assert!(stick_n > 0 && slip_n > 0);
+    let (rfx, rfy) = (out.forces.fx.unwrap(), out.forces.fy.unwrap());
+    assert!((fx - rfx).abs() < 1e-9 * rfx.abs() && (fy - rfy).abs() < 1e-9 * rfy.abs().max(1.0));
+    assert!(out.forces.mz.unwrap().is_finite());
+}
