@@ -178,6 +178,9 @@ pub fn run(mode: Mode) -> Report {
         methods::lp_mindlin(mode),
         methods::fast_mindlin(mode, &mut missing),
         methods::hertz_ellipse(mode),
+        methods::rolling3d_exact(mode),
+        methods::rolling3d_approx(mode, false),
+        methods::rolling3d_approx(mode, true),
     ];
     for m in &mut methods {
         m.reading = reading(m);
