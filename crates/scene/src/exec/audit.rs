@@ -182,10 +182,11 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
                 let cap = f * c.normal_load;
                 let t = out.forces.tangential;
                 let (ex, ey) = grid_direction(plan);
-                // 3D rolling reports the creep force as (fx, fy); otherwise T along its
-                // direction.
+                // 3D rolling reports the creep force on the indenter as (fx, fy), and the
+                // lattice carries the traction on the substrate: -(fx, fy); otherwise T along
+                // its direction.
                 let (tx, ty) = match (out.forces.fx, out.forces.fy) {
-                    (Some(fx), Some(fy)) => (fx, fy),
+                    (Some(fx), Some(fy)) => (-fx, -fy),
                     _ => (t * ex, t * ey),
                 };
                 let err = (sx * area - tx).hypot(sy * area - ty) / cap;
@@ -208,7 +209,7 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
                 let spin = if sp > 0.0 { f * c.normal_load * rbar / sp } else { 1.0 };
                 // With a force alone the moment is not prescribed (no rotation is imposed);
                 // 3D rolling reports its spin moment mz.
-                let moment = out.forces.mz.unwrap_or(out.forces.moment);
+                let moment = out.forces.mz.map_or(out.forces.moment, |mz| -mz);
                 if moment != 0.0 {
                     b.at_most(
                         "moment resultant",

@@ -1,6 +1,10 @@
 //! Stage 2 of a 3D contact in steady rolling: creep forces, spin moment, traction, stick and
 //! slip and micro-slip from the creepages, by the exact theory, FASTSIM or Polach's law
 //! (`stickslip_traction::rolling`), on the normal stage's contact grid.
+//!
+//! The rolling theories give the traction on body 1 (the indenter, Kalker's convention) and
+//! the creep forces on it; the lattice carries, as for every 3D contact, the traction on the
+//! substrate, its negative, which the subsurface field stage loads the substrate with.
 
 use stickslip_traction::rolling::{fastsim, polach, RollingMethod, RollingSolution, SteadyRolling};
 use stickslip_traction::Error as TractionError;
@@ -66,7 +70,7 @@ pub(crate) fn solve(
         ));
         return Ok(TangentialOut {
             creep: Some([fx, fy, 0.0]),
-            tangential: fx,
+            tangential: fx.hypot(fy),
             moment: 0.0,
             rigid: RigidOut { tangential: None, rotation: None, per_body: None },
             zones: Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: None },
@@ -80,8 +84,8 @@ pub(crate) fn solve(
     let mut slip = [vec![vec![0.0; ny]; nx], vec![vec![0.0; ny]; nx]];
     for k in 0..sol.x.len() {
         if let Some((i, j)) = lat.index(sol.x[k], sol.y[k]) {
-            lat.qx[i][j] = sol.qx[k];
-            lat.qy[i][j] = sol.qy[k];
+            lat.qx[i][j] = -sol.qx[k];
+            lat.qy[i][j] = -sol.qy[k];
             lat.stick[i][j] = i8::from(sol.stick[k]);
             slip[0][i][j] = v * sol.sx[k];
             slip[1][i][j] = v * sol.sy[k];
@@ -113,7 +117,7 @@ pub(crate) fn solve(
     ));
     Ok(TangentialOut {
         creep: Some([sol.fx, sol.fy, sol.mz]),
-        tangential: sol.fx,
+        tangential: sol.fx.hypot(sol.fy),
         moment: 0.0,
         rigid: RigidOut { tangential: None, rotation: None, per_body: None },
         zones: Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: Some(zones) },
