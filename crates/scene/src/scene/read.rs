@@ -52,9 +52,10 @@ impl Reader<'_> {
         match q.get_ref() {
             Qty::Num(v) => Ok(*v),
             Qty::Text(t) => parse_quantity(t, dim, name).map_err(|e| {
-                self.err(ErrorKind::Unit, key, Some(q.span()), e.to_string()).hint(format!(
-                    "write a number in SI ({dim}) or a string like \"10 mm\", \"30e6 psi\""
-                ))
+                let hint = e.suggestion().unwrap_or_else(|| {
+                    format!("write a number in SI ({dim}) or a string like \"10 mm\", \"30e6 psi\"")
+                });
+                self.err(ErrorKind::Unit, key, Some(q.span()), e.to_string()).hint(hint)
             }),
         }
     }
@@ -657,7 +658,9 @@ fn surface(
                                 Some(u.span()),
                                 e.to_string(),
                             )
-                            .hint("a length unit, e.g. \"um\", \"nm\", \"m\"")
+                            .hint(e.suggestion().unwrap_or_else(|| {
+                                "a length unit, e.g. \"um\", \"nm\", \"m\"".to_string()
+                            }))
                         })?
                 }
             };
