@@ -7,7 +7,8 @@
 //!
 //! The path of a scene is **scene → validate → plan → execute**:
 //!
-//! - [`units`]: quantities with units to SI;
+//! - [`units`]: quantities with units to SI; [`materials`]: named materials (`material =
+//!   "steel"`);
 //! - [`Scene`]: parsing and validation, with errors naming file, line, column, key and what is
 //!   allowed, including the combinations the planner refuses;
 //! - [`plan`]: the planner ([`Plan::new`]): a typed [`Recipe`] (the method and resolved
@@ -29,6 +30,7 @@
 
 mod error;
 pub mod exec;
+pub mod materials;
 mod output;
 mod overview;
 pub mod plan;

@@ -94,10 +94,11 @@ pub(crate) struct RawPatch {
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSubstrate {
     pub model: Spanned<String>,
+    pub material: Option<Spanned<String>>,
     pub e: Option<SQty>,
     pub e0: Option<SQty>,
     pub k: Option<Spanned<f64>>,
-    pub nu: Spanned<f64>,
+    pub nu: Option<Spanned<f64>>,
     pub alpha: Option<SQty>,
     pub beta: Option<SQty>,
 }
@@ -106,6 +107,7 @@ pub(crate) struct RawSubstrate {
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawIndenter {
     pub model: Spanned<String>,
+    pub material: Option<Spanned<String>>,
     pub e: Option<SQty>,
     pub nu: Option<Spanned<f64>>,
 }

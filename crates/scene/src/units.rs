@@ -156,7 +156,10 @@ fn unknown_tail(suggestions: &[String], known: &str) -> String {
     if suggestions.is_empty() {
         format!("; known units: {known}")
     } else {
-        format!(": did you mean {}? (units are case-sensitive: m is milli, M is mega)", or_list(suggestions))
+        format!(
+            ": did you mean {}? (units are case-sensitive: m is milli, M is mega)",
+            or_list(suggestions)
+        )
     }
 }
 

@@ -120,10 +120,11 @@ static GEOMETRY: Table = Table {
 static SUBSTRATE: Table = Table {
     fields: &[
         req("model", Kind::Str(&["homogeneous", "graded", "viscoelastic"])),
+        f("material", Kind::Str(&[])),
         f("e", Kind::Qty("\"210 GPa\"")),
         f("e0", Kind::Qty("\"1767600 kgf/m^2.1\"")),
         f("k", Kind::Num),
-        req("nu", Kind::Num),
+        f("nu", Kind::Num),
         f("alpha", Kind::Qty("\"2 s\"")),
         f("beta", Kind::Qty("\"1 s\"")),
     ],
@@ -132,6 +133,7 @@ static SUBSTRATE: Table = Table {
 static INDENTER: Table = Table {
     fields: &[
         req("model", Kind::Str(&["rigid", "homogeneous", "same"])),
+        f("material", Kind::Str(&[])),
         f("e", Kind::Qty("\"210 GPa\"")),
         f("nu", Kind::Num),
     ],
