@@ -18,6 +18,8 @@
 //!   → twist → rolling → load cycle → subsurface field) into an [`Outcome`] (result.json),
 //!   deciding nothing again ([`Evaluations`] counts what ran); [`run()`] is plan + execute;
 //! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing;
+//! - [`json_schema`]: the JSON Schema of the format, for editors; [`templates`]: the
+//!   commented starting scenes of `stickslip new`;
 //! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
 //!   techniques per scene, from the planner alone.
 //!
@@ -30,6 +32,7 @@
 
 mod error;
 pub mod exec;
+pub mod json_schema;
 pub mod materials;
 mod output;
 mod overview;
@@ -37,6 +40,7 @@ pub mod plan;
 mod plots;
 mod raw;
 mod scene;
+pub mod templates;
 pub mod units;
 
 pub use error::{ErrorKind, SceneError};

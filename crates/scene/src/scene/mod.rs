@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 
 mod builder;
 mod heights;
-mod read;
+pub(crate) mod read;
 pub(crate) mod validate;
 
 pub use builder::SceneBuilder;

@@ -24,7 +24,7 @@ use crate::raw::{Qty, RawScene, SQty};
 use crate::units::{parse_quantity, Dim};
 
 mod material;
-mod schema;
+pub(crate) mod schema;
 
 struct Reader<'a> {
     src: &'a str,

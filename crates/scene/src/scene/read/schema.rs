@@ -698,3 +698,27 @@ fn syntax_error(src: &str, e: &toml::de::Error) -> SceneError {
     }
     err
 }
+
+/// Every key of the format, dotted (keys of an array of tables as `geometry.patches.shape`),
+/// with the values a string key allows (empty when any string goes) or None for keys that
+/// are not strings: for the JSON Schema (`crate::json_schema`), which takes its enums from
+/// here so the two descriptions of the format cannot drift apart.
+pub(crate) fn keys() -> Vec<(String, Option<&'static [&'static str]>)> {
+    fn walk(t: &Table, prefix: &str, out: &mut Vec<(String, Option<&'static [&'static str]>)>) {
+        for f in t.fields {
+            let key =
+                if prefix.is_empty() { f.name.to_string() } else { format!("{prefix}.{}", f.name) };
+            match f.kind {
+                Kind::Str(c) => out.push((key, Some(c))),
+                Kind::Table(sub) | Kind::TableArray(sub) => {
+                    out.push((key.clone(), None));
+                    walk(sub, &key, out);
+                }
+                _ => out.push((key, None)),
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&TOP, "", &mut out);
+    out
+}
