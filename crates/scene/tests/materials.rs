@@ -174,3 +174,11 @@ fn docs_materials_md_is_current() {
         "docs/materials.md is not current: run STICKSLIP_UPDATE_DOCS=1 cargo test --release -p stickslip-scene --test materials"
     );
 }
+
+#[test]
+fn a_material_that_is_not_a_string_is_refused_in_plain_words() {
+    let e = read(&BALL.replace("material = \"glass\"", "material = 7")).unwrap_err();
+    assert_eq!(e.key.as_deref(), Some("substrate.material"), "{e}");
+    assert!(e.message.contains("expected a string, found the number 7"), "{e}");
+    assert!(e.hint.as_deref().unwrap_or("").contains("material = \"steel\""), "{e}");
+}

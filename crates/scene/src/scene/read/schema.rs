@@ -303,7 +303,9 @@ fn check(v: &Spanned<DeValue<'_>>, kind: Kind, key: &str, out: &mut Vec<Problem>
     match kind {
         Kind::Str(choices) => {
             if !matches!(val, DeValue::String(_)) {
-                let hint = if choices.is_empty() {
+                let hint = if name == "material" {
+                    "a name in quotes, e.g. material = \"steel\" (docs/materials.md)".to_string()
+                } else if choices.is_empty() {
                     format!("write it in quotes, e.g. {name} = \"my scene\"")
                 } else {
                     format!(
