@@ -66,7 +66,7 @@ pub const MATERIALS: &[Material] = &[
     },
     Material {
         name: "titanium",
-        aliases: &["ti-6al-4v", "titanium alloy"],
+        aliases: &["Ti-6Al-4V", "titanium alloy"],
         e: 114.0 * GPA,
         nu: 0.34,
         grade: "Ti-6Al-4V (grade 5), annealed; commercially pure titanium is about 105 GPa",
@@ -115,7 +115,7 @@ pub const MATERIALS: &[Material] = &[
     },
     Material {
         name: "tungsten carbide",
-        aliases: &["wc", "carbide", "cemented carbide"],
+        aliases: &["WC", "carbide", "cemented carbide"],
         e: 620.0 * GPA,
         nu: 0.22,
         grade: "cemented carbide WC-6Co (6% cobalt binder); more cobalt lowers the modulus, \
@@ -123,28 +123,28 @@ pub const MATERIALS: &[Material] = &[
     },
     Material {
         name: "silicon nitride",
-        aliases: &["si3n4"],
+        aliases: &["Si3N4"],
         e: 310.0 * GPA,
         nu: 0.27,
         grade: "hot isostatically pressed Si3N4 of bearing-ball grade",
     },
     Material {
         name: "alumina",
-        aliases: &["al2o3", "aluminium oxide", "aluminum oxide"],
+        aliases: &["Al2O3", "aluminium oxide", "aluminum oxide"],
         e: 370.0 * GPA,
         nu: 0.22,
         grade: "99.5% alumina ceramic (sintered Al2O3)",
     },
     Material {
         name: "silicon carbide",
-        aliases: &["sic"],
+        aliases: &["SiC"],
         e: 410.0 * GPA,
         nu: 0.14,
         grade: "sintered alpha silicon carbide",
     },
     Material {
         name: "zirconia",
-        aliases: &["zro2", "y-tzp"],
+        aliases: &["ZrO2", "Y-TZP"],
         e: 205.0 * GPA,
         nu: 0.31,
         grade: "yttria-stabilised tetragonal zirconia (3Y-TZP)",
@@ -187,14 +187,14 @@ pub const MATERIALS: &[Material] = &[
     },
     Material {
         name: "polycarbonate",
-        aliases: &["pc"],
+        aliases: &["PC"],
         e: 2.3 * GPA,
         nu: 0.37,
         grade: "unfilled polycarbonate",
     },
     Material {
         name: "nylon",
-        aliases: &["pa66", "polyamide"],
+        aliases: &["PA66", "polyamide"],
         e: 2.8 * GPA,
         nu: 0.39,
         grade: "nylon 6,6 (PA66), dry as moulded; water lowers the modulus by up to half",
@@ -202,7 +202,7 @@ pub const MATERIALS: &[Material] = &[
     Material { name: "PEEK", aliases: &[], e: 3.6 * GPA, nu: 0.40, grade: "unfilled PEEK" },
     Material {
         name: "polyethylene",
-        aliases: &["hdpe"],
+        aliases: &["HDPE"],
         e: 1.0 * GPA,
         nu: 0.42,
         grade: "high-density polyethylene (HDPE)",
