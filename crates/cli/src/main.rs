@@ -11,6 +11,10 @@
 //! - `stickslip reproduce [--out DIR]`: the verification pages (stickslip-verification).
 //! - `stickslip accuracy [--quick|--full] [--out DIR]`: the accuracy-versus-time report
 //!   (stickslip-benches).
+//! - `stickslip new KIND [FILE]`, `stickslip new --list`, `stickslip schema`: a commented
+//!   scene to start from, and the JSON Schema editors read (`new.rs`).
+//! - `stickslip completions SHELL`, `stickslip man`: shell completions and the manual page
+//!   (`completions.rs`).
 //!
 //! Errors print the scene error (file:line:column, key, message, hint) on stderr; no output
 //! file is left behind. Exit status (the mapping is `ErrorKind::exit_code` of the scene
@@ -34,12 +38,15 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use stickslip_scene::{
     write_outputs_with, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, WriteOptions,
     Zones,
 };
+
+mod completions;
+mod new;
 
 /// The exit statuses, shown by `--help` and `run --help`.
 const EXIT_CODES: &str = "\
@@ -106,6 +113,14 @@ enum Command {
         #[arg(long, value_name = "DIR", default_value = "docs")]
         out: PathBuf,
     },
+    /// Write a commented scene to start from (see --list for the kinds).
+    New(new::NewArgs),
+    /// Print the JSON Schema of the scene format (for editors; see `#:schema`).
+    Schema,
+    /// Print a shell completion script: stickslip completions bash > ~/.local/share/bash-completion/completions/stickslip
+    Completions(completions::CompletionsArgs),
+    /// Print the manual page (roff): stickslip man > stickslip.1
+    Man,
 }
 
 /// Why a command ended without success.
@@ -405,6 +420,10 @@ fn dispatch(cli: &Cli) -> Result<(), Failure> {
         Command::Explain { scene } => cmd_explain(scene.as_ref()),
         Command::Reproduce { out } => cmd_reproduce(out),
         Command::Accuracy { quick, full, out } => cmd_accuracy(*quick && !*full, out),
+        Command::New(a) => new::run(a),
+        Command::Schema => new::schema(),
+        Command::Completions(a) => completions::run(a, Cli::command()),
+        Command::Man => completions::man(Cli::command()),
     }
 }
 

@@ -7,7 +7,8 @@
 //!
 //! The path of a scene is **scene → validate → plan → execute**:
 //!
-//! - [`units`]: quantities with units to SI;
+//! - [`units`]: quantities with units to SI; [`materials`]: named materials (`material =
+//!   "steel"`);
 //! - [`Scene`]: parsing and validation, with errors naming file, line, column, key and what is
 //!   allowed, including the combinations the planner refuses;
 //! - [`plan`]: the planner ([`Plan::new`]): a typed [`Recipe`] (the method and resolved
@@ -17,6 +18,8 @@
 //!   → twist → rolling → load cycle → subsurface field) into an [`Outcome`] (result.json),
 //!   deciding nothing again ([`Evaluations`] counts what ran); [`run()`] is plan + execute;
 //! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing;
+//! - [`json_schema`]: the JSON Schema of the format, for editors; [`templates`]: the
+//!   commented starting scenes of `stickslip new`;
 //! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
 //!   techniques per scene, from the planner alone.
 //!
@@ -29,12 +32,15 @@
 
 mod error;
 pub mod exec;
+pub mod json_schema;
+pub mod materials;
 mod output;
 mod overview;
 pub mod plan;
 mod plots;
 mod raw;
 mod scene;
+pub mod templates;
 pub mod units;
 
 pub use error::{ErrorKind, SceneError};

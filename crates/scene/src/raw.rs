@@ -2,6 +2,7 @@
 //! Field names here ARE the format (docs/SCENES.md); `deny_unknown_fields` makes a misspelt key
 //! an error instead of a silently ignored setting.
 
+use schemars::JsonSchema;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -15,160 +16,342 @@ pub(crate) enum Qty {
 
 pub(crate) type SQty = Spanned<Qty>;
 
-#[derive(Debug, Deserialize)]
+/// In the JSON Schema a quantity is a number (SI) or a string that starts with a number; the
+/// unit and its dimension are the reader's to check (`crate::units`).
+impl JsonSchema for Qty {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Quantity".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        schemars::json_schema!({
+            "description": "A number in SI units, or a string: a number and a unit, e.g. \"10 mm\", \"1 mN\", \"210 GPa\", \"30e6 psi\", \"10 cm/s\". Units: m, N, Pa, s with a prefix p n u m c k M G; in ft lbf kgf psi ksi min h.",
+            "anyOf": [
+                { "type": "number" },
+                { "type": "string", "pattern": "^\\s*[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?(\\s*[^\\s].*)?$" }
+            ]
+        })
+    }
+}
+
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawScene {
+    /// A title for messages, plots and result.json.
     pub title: Option<String>,
+    /// What touches what: the kind of contact and its dimensions.
+    #[schemars(with = "RawGeometry")]
     pub geometry: Spanned<RawGeometry>,
+    /// The body below.
+    #[schemars(with = "RawSubstrate")]
     pub substrate: Spanned<RawSubstrate>,
+    /// The body above; rigid when the table is absent.
+    #[schemars(with = "Option<RawIndenter>")]
     pub indenter: Option<Spanned<RawIndenter>>,
+    /// Normal and tangential loads, friction, moment.
+    #[schemars(with = "RawLoad")]
     pub load: Spanned<RawLoad>,
+    /// Static (the default) or steady rolling.
+    #[schemars(with = "Option<RawMotion>")]
     pub motion: Option<Spanned<RawMotion>>,
+    /// What to compute beyond the contact solution.
     pub outputs: Option<RawOutputs>,
+    /// How to solve; the planner chooses when absent.
     pub solver: Option<RawSolver>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawGeometry {
+    /// The kind of contact.
+    #[schemars(with = "String")]
     pub kind: Spanned<String>,
+    /// Radius R of the cylinder or sphere (length, e.g. "10 mm").
+    #[schemars(with = "Option<Qty>")]
     pub radius: Option<SQty>,
+    /// Ellipsoid: the contact semi-axes [a, b] (lengths).
+    #[schemars(with = "Option<Vec<Qty>>")]
     pub semi_axes: Option<Spanned<Vec<SQty>>>,
+    /// Ellipsoid: the relative radii of curvature [Rx, Ry] (lengths).
+    #[schemars(with = "Option<Vec<Qty>>")]
     pub radii: Option<Spanned<Vec<SQty>>>,
+    /// Punch: the half-width (length).
+    #[schemars(with = "Option<Qty>")]
     pub half_width: Option<SQty>,
+    /// Patches: the flat contact patches with their pressures.
+    #[schemars(with = "Option<Vec<RawPatch>>")]
     pub patches: Option<Spanned<Vec<Spanned<RawPatch>>>>,
+    /// Surface: free (an isolated contact) or periodic (the lattice is one period).
+    #[schemars(with = "Option<String>")]
     pub boundary: Option<Spanned<String>>,
+    /// Surface: the lattice extent [x, y] (lengths).
+    #[schemars(with = "Option<Vec<Qty>>")]
     pub size: Option<Spanned<Vec<SQty>>>,
+    /// Surface: the cells along x and y, e.g. [256, 256].
+    #[schemars(with = "Option<Vec<f64>>")]
     pub cells: Option<Spanned<Vec<f64>>>,
+    /// Surface: the smooth part of the gap.
+    #[schemars(with = "Option<RawProfile>")]
     pub profile: Option<Spanned<RawProfile>>,
+    /// Surface: roughness from a file or generated.
+    #[schemars(with = "Option<RawRoughness>")]
     pub roughness: Option<Spanned<RawRoughness>>,
 }
 
 // The crowned cylinder's keys (length, crown, end_radius) are part of the format and are
 // refused by the reader until that profile is solved.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 #[allow(dead_code)]
 pub(crate) struct RawProfile {
+    /// The profile shape (cylinder, the crowned roller, is not solved yet).
+    #[schemars(with = "String")]
     pub shape: Spanned<String>,
+    /// Sphere: the radius; punch: the radius of the flat face (length).
+    #[schemars(with = "Option<Qty>")]
     pub radius: Option<SQty>,
+    /// Ellipsoid: the radii [Rx, Ry] (lengths).
+    #[schemars(with = "Option<Vec<Qty>>")]
     pub radii: Option<Spanned<Vec<SQty>>>,
+    /// Punch: the edge radius (length).
+    #[schemars(with = "Option<Qty>")]
     pub edge_radius: Option<SQty>,
+    /// Wavy: the wavelength (length).
+    #[schemars(with = "Option<Qty>")]
     pub wavelength: Option<SQty>,
+    /// Wavy: the amplitude (length).
+    #[schemars(with = "Option<Qty>")]
     pub amplitude: Option<SQty>,
+    /// Wavy: waves along x, or along x and y.
+    #[schemars(with = "Option<String>")]
     pub along: Option<Spanned<String>>,
+    /// Crowned cylinder: the length (refused: not solved yet).
+    #[schemars(with = "Option<Qty>")]
     pub length: Option<SQty>,
+    /// Crowned cylinder: the crown drop (refused: not solved yet).
+    #[schemars(with = "Option<Qty>")]
     pub crown: Option<SQty>,
+    /// Crowned cylinder: the end radius (refused: not solved yet).
+    #[schemars(with = "Option<Qty>")]
     pub end_radius: Option<SQty>,
 }
 
 // Generated roughness's keys (hurst, rms_height, ...) are part of the format and are refused
 // by the reader until generation is implemented.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 #[allow(dead_code)]
 pub(crate) struct RawRoughness {
+    /// Heights from a file: .npy of float64 (ny, nx) or .csv with one row per y, relative to the scene file.
+    #[schemars(with = "Option<String>")]
     pub file: Option<Spanned<String>>,
+    /// The length unit of the heights in the file, e.g. "um" or "nm" (default m).
+    #[schemars(with = "Option<String>")]
     pub unit: Option<Spanned<String>>,
+    /// Generated: the Hurst exponent, 0 < H <= 1.
+    #[schemars(with = "Option<f64>")]
     pub hurst: Option<Spanned<f64>>,
+    /// Generated: the rms height (length); or give rms_slope.
+    #[schemars(with = "Option<Qty>")]
     pub rms_height: Option<SQty>,
+    /// Generated: the rms slope; or give rms_height.
+    #[schemars(with = "Option<f64>")]
     pub rms_slope: Option<Spanned<f64>>,
+    /// Generated: the lowest wavenumber (cycles per lattice length along x), >= 1.
+    #[schemars(with = "Option<f64>")]
     pub k_low: Option<Spanned<f64>>,
+    /// Generated: the roll-off wavenumber, k_low <= k_rolloff <= k_high.
+    #[schemars(with = "Option<f64>")]
     pub k_rolloff: Option<Spanned<f64>>,
+    /// Generated: the highest wavenumber (default: the Nyquist limit).
+    #[schemars(with = "Option<f64>")]
     pub k_high: Option<Spanned<f64>>,
+    /// Generated: the random seed, a whole number >= 0.
+    #[schemars(with = "Option<i64>")]
     pub seed: Option<Spanned<i64>>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPatch {
+    /// The outline of the patch.
+    #[schemars(with = "String")]
     pub shape: Spanned<String>,
+    /// The centre [x, y] (lengths).
+    #[schemars(with = "Vec<Qty>")]
     pub centre: Spanned<Vec<SQty>>,
+    /// Square: the side (length).
+    #[schemars(with = "Option<Qty>")]
     pub side: Option<SQty>,
+    /// Rectangle: the sides [along x, along y] (lengths).
+    #[schemars(with = "Option<Vec<Qty>>")]
     pub sides: Option<Spanned<Vec<SQty>>>,
+    /// Circle: the radius (length).
+    #[schemars(with = "Option<Qty>")]
     pub radius: Option<SQty>,
+    /// The uniform pressure on the patch (stress, e.g. "10 MPa").
+    #[schemars(with = "Qty")]
     pub pressure: SQty,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSubstrate {
+    /// The material model.
+    #[schemars(with = "String")]
     pub model: Spanned<String>,
+    /// A named material (docs/materials.md) instead of e and nu: homogeneous and viscoelastic only.
+    #[schemars(with = "Option<String>")]
+    pub material: Option<Spanned<String>>,
+    /// Young's modulus (stress, e.g. "210 GPa"); the long-time modulus when viscoelastic.
+    #[schemars(with = "Option<Qty>")]
     pub e: Option<SQty>,
+    /// Graded: E0 of E = e0 y^k, in force/length^(2+k), e.g. "1767600 kgf/m^2.1".
+    #[schemars(with = "Option<Qty>")]
     pub e0: Option<SQty>,
+    /// Graded: the exponent k of E = e0 y^k, 0 <= k < 1.
+    #[schemars(with = "Option<f64>")]
     pub k: Option<Spanned<f64>>,
-    pub nu: Spanned<f64>,
+    /// Poisson's ratio, -1 < nu <= 0.5 (required unless material is given).
+    #[schemars(with = "Option<f64>")]
+    pub nu: Option<Spanned<f64>>,
+    /// Viscoelastic: the retardation time (time, e.g. "2 s").
+    #[schemars(with = "Option<Qty>")]
     pub alpha: Option<SQty>,
+    /// Viscoelastic: the relaxation time (time), beta <= alpha.
+    #[schemars(with = "Option<Qty>")]
     pub beta: Option<SQty>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawIndenter {
+    /// Rigid, homogeneous elastic, or the same material as the substrate.
+    #[schemars(with = "String")]
     pub model: Spanned<String>,
+    /// Homogeneous: a named material (docs/materials.md) instead of e and nu.
+    #[schemars(with = "Option<String>")]
+    pub material: Option<Spanned<String>>,
+    /// Homogeneous: Young's modulus (stress).
+    #[schemars(with = "Option<Qty>")]
     pub e: Option<SQty>,
+    /// Homogeneous: Poisson's ratio, -1 < nu <= 0.5.
+    #[schemars(with = "Option<f64>")]
     pub nu: Option<Spanned<f64>>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawLoad {
+    /// The normal force: N/m for a cylinder or punch (2D), N otherwise.
+    #[schemars(with = "Option<Qty>")]
     pub normal: Option<SQty>,
+    /// Instead of normal: the contact half-width (length).
+    #[schemars(with = "Option<Qty>")]
     pub half_width: Option<SQty>,
+    /// Surface, instead of normal: the approach of the bodies (length).
+    #[schemars(with = "Option<Qty>")]
     pub approach: Option<SQty>,
+    /// The tangential force (N/m in 2D, N in 3D).
+    #[schemars(with = "Option<Qty>")]
     pub tangential: Option<SQty>,
+    /// The direction of the tangential force, degrees from +x.
+    #[schemars(with = "Option<f64>")]
     pub direction_deg: Option<Spanned<f64>>,
+    /// The Coulomb friction coefficient, >= 0.
+    #[schemars(with = "Option<f64>")]
     pub friction: Option<Spanned<f64>>,
+    /// Full sliding: q = f p.
     pub sliding: Option<bool>,
+    /// A twisting moment about the contact normal (force x length, e.g. "0.5 N m").
+    #[schemars(with = "Option<Qty>")]
     pub moment: Option<SQty>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawMotion {
+    /// Static, or steady rolling.
+    #[schemars(with = "String")]
     pub kind: Spanned<String>,
+    /// Rolling: the speed (length/time, e.g. "10 cm/s").
+    #[schemars(with = "Option<Qty>")]
     pub speed: Option<SQty>,
+    /// 2D rolling of a cylinder: the creep ratio (omega R - w) / w.
+    #[schemars(with = "Option<f64>")]
     pub creep: Option<Spanned<f64>>,
+    /// 3D rolling: the longitudinal, lateral and spin creepages.
+    #[schemars(with = "Option<RawCreepage>")]
     pub creepage: Option<Spanned<RawCreepage>>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawCreepage {
+    /// Longitudinal creepage xi (dimensionless), default 0.
+    #[schemars(with = "Option<f64>")]
     pub longitudinal: Option<Spanned<f64>>,
+    /// Lateral creepage eta (dimensionless), default 0.
+    #[schemars(with = "Option<f64>")]
     pub lateral: Option<Spanned<f64>>,
+    /// Spin creepage, a reciprocal length with its unit (e.g. "0.1 1/m"), default 0.
+    #[schemars(with = "Option<Qty>")]
     pub spin: Option<SQty>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawOutputs {
+    /// Surface arrays (pressure, tractions, displacements, zones); default true.
     pub surface: Option<bool>,
+    /// Subsurface stresses on a grid.
+    #[schemars(with = "Option<RawField>")]
     pub field: Option<Spanned<RawField>>,
+    /// A loading cycle (hysteresis) of the tangential load.
+    #[schemars(with = "Option<RawCycle>")]
     pub cycle: Option<Spanned<RawCycle>>,
+    /// SVG plots beside result.json; default false.
     pub plots: Option<bool>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawField {
+    /// x: [from, to, count].
+    #[schemars(with = "Vec<f64>")]
     pub x: Spanned<Vec<f64>>,
+    /// 2D: depth [from, to, count] (from > 0); 3D: y [from, to, count].
+    #[schemars(with = "Vec<f64>")]
     pub y: Spanned<Vec<f64>>,
+    /// 3D only: depth [from, to, count] (from > 0).
+    #[schemars(with = "Option<Vec<f64>>")]
     pub z: Option<Spanned<Vec<f64>>>,
+    /// The unit of the coordinates: the contact half-width a, or metres.
+    #[schemars(with = "Option<String>")]
     pub scale: Option<Spanned<String>>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawCycle {
+    /// The amplitude T*/(f P), in (0, 1].
+    #[schemars(with = "f64")]
     pub amplitude: Spanned<f64>,
+    /// Points along the loop, 4 to 100000 (default 60).
+    #[schemars(with = "Option<i64>")]
     pub points: Option<Spanned<i64>>,
 }
 
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSolver {
+    /// The method; auto lets the planner choose.
+    #[schemars(with = "Option<String>")]
     pub method: Option<Spanned<String>>,
+    /// Elements per side of grid solvers.
+    #[schemars(with = "Option<i64>")]
     pub grid: Option<Spanned<i64>>,
+    /// The relative tolerance.
+    #[schemars(with = "Option<f64>")]
     pub tolerance: Option<Spanned<f64>>,
 }

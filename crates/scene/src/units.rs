@@ -101,7 +101,7 @@ pub enum UnitError {
         text: String,
     },
     /// An atom is not a known unit.
-    #[error("unknown unit '{unit}' in '{text}'; known units: {known}")]
+    #[error("unknown unit '{unit}' in '{text}'{}", unknown_tail(.suggestions, .known))]
     UnknownUnit {
         /// The unrecognised atom.
         unit: String,
@@ -109,6 +109,8 @@ pub enum UnitError {
         text: String,
         /// The list of accepted atoms.
         known: &'static str,
+        /// Units that differ from `unit` only in letter case ("Mn": "mN", "MN").
+        suggestions: Vec<String>,
     },
     /// The unit expression is malformed (e.g. `N//m`, `m^`).
     #[error("malformed unit expression '{unit}' in '{text}': {why}")]
@@ -140,9 +142,43 @@ pub enum UnitError {
     },
 }
 
+/// "'mN' or 'MN'" / "'kN'" for a list of suggestions.
+fn or_list(s: &[String]) -> String {
+    let q: Vec<String> = s.iter().map(|u| format!("'{u}'")).collect();
+    match q.split_last() {
+        None => String::new(),
+        Some((last, [])) => last.clone(),
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+    }
+}
+
+fn unknown_tail(suggestions: &[String], known: &str) -> String {
+    if suggestions.is_empty() {
+        format!("; known units: {known}")
+    } else {
+        format!(
+            ": did you mean {}? (units are case-sensitive: m is milli, M is mega)",
+            or_list(suggestions)
+        )
+    }
+}
+
+impl UnitError {
+    /// A hint naming the intended unit, when the unit was a near miss (a wrong letter case).
+    pub fn suggestion(&self) -> Option<String> {
+        match self {
+            UnitError::UnknownUnit { suggestions, .. } if !suggestions.is_empty() => {
+                Some(format!("did you mean {}?", or_list(suggestions)))
+            }
+            _ => None,
+        }
+    }
+}
+
 /// The atoms a unit expression may use, for error messages.
-pub const KNOWN_UNITS: &str =
-    "m cm mm um in ft N kN MN lbf kgf Pa kPa MPa GPa psi ksi s ms us min h rad (1/m: a bare 1)";
+pub const KNOWN_UNITS: &str = "m N Pa s, each with an SI prefix p n u (or µ) m c k M G \
+     (mm, um, nm, mN, kN, MPa, GPa, ms ...); in ft lbf kgf psi ksi min h; rad and a bare 1 \
+     (1/m)";
 
 /// Newtons in one pound-force (exact by definition: 0.45359237 kg x 9.80665 m/s^2).
 pub const LBF: f64 = 0.45359237 * 9.80665;
@@ -151,38 +187,80 @@ pub const KGF: f64 = 9.80665;
 /// Metres in one inch (exact by definition).
 pub const INCH: f64 = 0.0254;
 
+/// The SI prefixes a base unit may carry: symbol, power of ten, factor. Micro is written
+/// `u`, `µ` (the micro sign) or `μ` (the Greek letter mu).
+pub const PREFIXES: [(&str, i32, f64); 10] = [
+    ("p", -12, 1e-12),
+    ("n", -9, 1e-9),
+    ("u", -6, 1e-6),
+    ("µ", -6, 1e-6),
+    ("μ", -6, 1e-6),
+    ("m", -3, 1e-3),
+    ("c", -2, 1e-2),
+    ("k", 3, 1e3),
+    ("M", 6, 1e6),
+    ("G", 9, 1e9),
+];
+
+/// The units that take an SI prefix: metre, newton, pascal, second.
+pub const PREFIXABLE: [(&str, Dim); 4] =
+    [("m", Dim::LENGTH), ("N", Dim::FORCE), ("Pa", Dim::STRESS), ("s", Dim::TIME)];
+
+/// The units that take no prefix, with their SI factor and dimension.
+pub const PLAIN: [(&str, f64, Dim); 10] = [
+    // A bare `1` (as in `1/m`) and the radian are pure numbers.
+    ("1", 1.0, Dim::NONE),
+    ("rad", 1.0, Dim::NONE),
+    ("in", INCH, Dim::LENGTH),
+    ("ft", 12.0 * INCH, Dim::LENGTH),
+    ("lbf", LBF, Dim::FORCE),
+    ("kgf", KGF, Dim::FORCE),
+    ("psi", LBF / (INCH * INCH), Dim::STRESS),
+    ("ksi", 1e3 * LBF / (INCH * INCH), Dim::STRESS),
+    ("min", 60.0, Dim::TIME),
+    ("h", 3600.0, Dim::TIME),
+];
+
+/// Every atom name: the plain units, and each prefixable unit with and without each prefix.
+pub fn all_atoms() -> Vec<String> {
+    let mut v: Vec<String> = PLAIN.iter().map(|(n, _, _)| (*n).to_string()).collect();
+    for (b, _) in PREFIXABLE {
+        v.push(b.to_string());
+        for (p, _, _) in PREFIXES {
+            v.push(format!("{p}{b}"));
+        }
+    }
+    v
+}
+
 fn atom(name: &str) -> Option<(f64, Dim)> {
-    let l = Dim::LENGTH;
-    let f = Dim::FORCE;
-    let s = Dim::STRESS;
-    let t = Dim::TIME;
-    Some(match name {
-        // A bare `1` (as in `1/m`) and the radian are pure numbers.
-        "1" | "rad" => (1.0, Dim::NONE),
-        "m" => (1.0, l),
-        "cm" => (1e-2, l),
-        "mm" => (1e-3, l),
-        "um" | "µm" | "μm" => (1e-6, l),
-        "in" => (INCH, l),
-        "ft" => (12.0 * INCH, l),
-        "N" => (1.0, f),
-        "kN" => (1e3, f),
-        "MN" => (1e6, f),
-        "lbf" => (LBF, f),
-        "kgf" => (KGF, f),
-        "Pa" => (1.0, s),
-        "kPa" => (1e3, s),
-        "MPa" => (1e6, s),
-        "GPa" => (1e9, s),
-        "psi" => (LBF / (INCH * INCH), s),
-        "ksi" => (1e3 * LBF / (INCH * INCH), s),
-        "s" => (1.0, t),
-        "ms" => (1e-3, t),
-        "us" | "µs" | "μs" => (1e-6, t),
-        "min" => (60.0, t),
-        "h" => (3600.0, t),
-        _ => return None,
-    })
+    if let Some((_, f, d)) = PLAIN.iter().find(|(n, _, _)| *n == name) {
+        return Some((*f, *d));
+    }
+    let base = |b: &str| PREFIXABLE.iter().find(|(n, _)| *n == b).map(|(_, d)| *d);
+    if let Some(d) = base(name) {
+        return Some((1.0, d));
+    }
+    // No name is both a base unit and a prefixed one, so the first prefix that fits is the one.
+    PREFIXES.iter().find_map(|(p, _, f)| Some((*f, base(name.strip_prefix(p)?)?)))
+}
+
+/// What an unknown atom was probably meant to be: the units that equal it but for letter
+/// case ("Mn": "mN" and "MN"; micro written `u`), and a product of two units written without
+/// the space between them ("Nm": "N m").
+fn near_misses(name: &str) -> Vec<String> {
+    let lower = name.to_lowercase();
+    let mut v: Vec<String> = all_atoms()
+        .into_iter()
+        .filter(|a| !a.starts_with(['µ', 'μ']) && a.to_lowercase() == lower)
+        .collect();
+    for (i, _) in name.char_indices().skip(1) {
+        let (a, b) = name.split_at(i);
+        if atom(a).is_some() && atom(b).is_some() && a != "1" && b != "1" {
+            v.push(format!("{a} {b}"));
+        }
+    }
+    v
 }
 
 /// Parse a unit expression such as `kgf/m^2.1` or `cm/s` into (SI factor, dimension).
@@ -213,6 +291,7 @@ pub fn parse_unit(unit: &str, text: &str) -> Result<(f64, Dim), UnitError> {
                 unit: name.to_string(),
                 text: text.to_string(),
                 known: KNOWN_UNITS,
+                suggestions: near_misses(name),
             })?;
             factor *= f.powf(sign * power);
             dim = dim.plus(d.scaled(sign * power));
@@ -347,6 +426,109 @@ mod tests {
         assert!(msg.contains("furlong") && msg.contains("lbf"), "{msg}");
         let msg = parse_quantity("10 psi", Dim::LENGTH, "length").unwrap_err().to_string();
         assert!(msg.contains("length") && msg.contains("N/m^2"), "{msg}");
+    }
+
+    /// Every prefix on every prefixable unit, alone and in compound units, against the factor
+    /// 10^exponent computed here from the exponent (not read from the table).
+    #[test]
+    fn every_prefix_on_every_unit_round_trips() {
+        let mut count = 0;
+        for (p, exp, _) in PREFIXES {
+            let ten = 10f64.powi(exp);
+            for (b, dim) in PREFIXABLE {
+                let v = parse_quantity(&format!("2.5 {p}{b}"), dim, "q").unwrap();
+                assert!(rel(v, 2.5 * ten) < 2e-16, "{p}{b}: {v}");
+                // Without the space, as "250um" is written.
+                let v = parse_quantity(&format!("2.5{p}{b}"), dim, "q").unwrap();
+                assert!(rel(v, 2.5 * ten) < 2e-16, "2.5{p}{b}: {v}");
+                count += 1;
+            }
+            let cases: [(String, Dim, f64); 6] = [
+                (format!("3 {p}N/m"), Dim::FORCE_PER_LENGTH, 3.0 * ten),
+                (format!("3 N/{p}m"), Dim::FORCE_PER_LENGTH, 3.0 / ten),
+                (format!("3 {p}m/s"), Dim::SPEED, 3.0 * ten),
+                (format!("3 1/{p}m"), Dim::PER_LENGTH, 3.0 / ten),
+                (format!("3 N {p}m"), Dim::MOMENT, 3.0 * ten),
+                (format!("3 kgf/{p}m^2.1"), Dim::graded_modulus(0.1), 3.0 * KGF / ten.powf(2.1)),
+            ];
+            for (text, dim, want) in cases {
+                let v = parse_quantity(&text, dim, "q").unwrap();
+                assert!(rel(v, want) < 1e-14, "{text}: {v} against {want}");
+            }
+        }
+        assert_eq!(count, 40);
+        // The three spellings of micro are one prefix.
+        for b in ["m", "N", "Pa", "s"] {
+            let d = atom(b).unwrap().1;
+            let u = parse_quantity(&format!("7 u{b}"), d, "q").unwrap();
+            assert_eq!(parse_quantity(&format!("7 \u{b5}{b}"), d, "q").unwrap(), u);
+            assert_eq!(parse_quantity(&format!("7 \u{3bc}{b}"), d, "q").unwrap(), u);
+        }
+        // milli and mega stay apart.
+        assert!(rel(parse_quantity("1 mN", Dim::FORCE, "q").unwrap(), 1e-3) < 1e-16);
+        assert!(rel(parse_quantity("1 MN", Dim::FORCE, "q").unwrap(), 1e6) < 1e-16);
+        assert!(rel(parse_quantity("1 mPa", Dim::STRESS, "q").unwrap(), 1e-3) < 1e-16);
+        assert!(rel(parse_quantity("1 MPa", Dim::STRESS, "q").unwrap(), 1e6) < 1e-16);
+    }
+
+    /// The units without a prefix, against their definitions (NIST SP 811).
+    #[test]
+    fn plain_units_round_trip() {
+        let want: [(&str, f64, Dim); 10] = [
+            ("1", 1.0, Dim::NONE),
+            ("rad", 1.0, Dim::NONE),
+            ("in", 0.0254, Dim::LENGTH),
+            ("ft", 0.3048, Dim::LENGTH),
+            ("lbf", 4.4482216152605, Dim::FORCE),
+            ("kgf", 9.80665, Dim::FORCE),
+            ("psi", 6894.757293168361, Dim::STRESS),
+            ("ksi", 6894757.293168361, Dim::STRESS),
+            ("min", 60.0, Dim::TIME),
+            ("h", 3600.0, Dim::TIME),
+        ];
+        assert_eq!(want.len(), PLAIN.len());
+        for (name, si, dim) in want {
+            let (f, d) = atom(name).unwrap();
+            assert!(rel(f, si) < 1e-14 && d == dim, "{name}: {f} {d}");
+        }
+    }
+
+    #[test]
+    fn every_atom_has_one_meaning() {
+        let all = all_atoms();
+        assert_eq!(all.len(), PLAIN.len() + PREFIXABLE.len() * (PREFIXES.len() + 1));
+        let mut seen = std::collections::BTreeSet::new();
+        for a in &all {
+            assert!(seen.insert(a.clone()), "{a} is listed twice");
+            assert!(atom(a).is_some(), "{a}");
+        }
+    }
+
+    #[test]
+    fn near_misses_name_the_intended_unit() {
+        let hint = |text: &str, dim: Dim| parse_quantity(text, dim, "q").unwrap_err();
+        let cases: [(&str, Dim, &str); 8] = [
+            ("1 Mn", Dim::FORCE, "did you mean 'mN' or 'MN'?"),
+            ("1 KN", Dim::FORCE, "did you mean 'kN'?"),
+            ("1 gpa", Dim::STRESS, "did you mean 'GPa'?"),
+            ("1 mpa", Dim::STRESS, "did you mean 'mPa' or 'MPa'?"),
+            ("1 UM", Dim::LENGTH, "did you mean 'um'?"),
+            ("1 NM", Dim::LENGTH, "did you mean 'nm'?"),
+            ("1 Nm", Dim::MOMENT, "did you mean 'nm' or 'N m'?"),
+            ("1 PA", Dim::STRESS, "did you mean 'Pa'?"),
+        ];
+        for (text, dim, want) in cases {
+            let e = hint(text, dim);
+            assert_eq!(e.suggestion().as_deref(), Some(want), "{text}: {e}");
+            assert!(e.to_string().contains(want), "{e}");
+        }
+        // Far misses and prefixes that are not supported: no guess, the list of units.
+        for text in ["1 fm", "1 dm", "1 kkm", "1 Kpsi", "1 furlong", "1 parsec"] {
+            let e = hint(text, Dim::LENGTH);
+            assert!(matches!(e, UnitError::UnknownUnit { .. }), "{text}: {e}");
+            assert_eq!(e.suggestion(), None, "{text}: {e}");
+            assert!(e.to_string().contains("known units"), "{e}");
+        }
     }
 
     #[test]

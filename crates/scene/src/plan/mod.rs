@@ -424,6 +424,19 @@ impl Plan {
         if let Some(f) = &self.file {
             s.push_str(&format!("file:  {}\n", f.display()));
         }
+        let named = self.source.as_ref().map_or(&[][..], |src| src.materials());
+        if !named.is_empty() {
+            s.push_str("\nmaterials (typical values of one grade; docs/materials.md):\n");
+            for (table, m) in named {
+                s.push_str(&format!(
+                    "  {table:<10} {}: E = {}, nu = {} ({})\n",
+                    m.name,
+                    crate::materials::modulus(m.e),
+                    m.nu,
+                    m.grade.split_whitespace().collect::<Vec<_>>().join(" ")
+                ));
+            }
+        }
         s.push_str("\neffects on:\n");
         for e in self.effects.iter().filter(|e| e.on) {
             let t = e.technique.map_or("", Technique::describe);

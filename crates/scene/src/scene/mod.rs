@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 
 mod builder;
 mod heights;
-mod read;
+pub(crate) mod read;
 pub(crate) mod validate;
 
 pub use builder::SceneBuilder;
@@ -504,9 +504,16 @@ plots = true
 pub struct Source {
     text: std::sync::Arc<str>,
     spans: std::collections::BTreeMap<String, Range<usize>>,
+    materials: Vec<(String, crate::materials::Material)>,
 }
 
 impl Source {
+    /// The named materials the scene used, with the table that named each ("substrate",
+    /// "indenter").
+    pub fn materials(&self) -> &[(String, crate::materials::Material)] {
+        &self.materials
+    }
+
     /// The text the scene was read from.
     pub(crate) fn text(&self) -> &str {
         &self.text

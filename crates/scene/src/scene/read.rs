@@ -15,20 +15,23 @@ use std::sync::Arc;
 use toml::Spanned;
 
 use super::{
-    Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
-    NormalLoad, Outputs, Patch, PatchShape, Profile, Scene, SolverOptions, Source, Substrate,
-    Surface, SurfaceBoundary,
+    Cycle, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion, NormalLoad,
+    Outputs, Patch, PatchShape, Profile, Scene, SolverOptions, Source, Substrate, Surface,
+    SurfaceBoundary,
 };
 use crate::error::{ErrorKind, SceneError};
 use crate::raw::{Qty, RawScene, SQty};
 use crate::units::{parse_quantity, Dim};
 
-mod schema;
+mod material;
+pub(crate) mod schema;
 
 struct Reader<'a> {
     src: &'a str,
     file: Option<PathBuf>,
     spans: RefCell<BTreeMap<String, Range<usize>>>,
+    /// The named materials used, by table ("substrate", "indenter").
+    materials: RefCell<Vec<(String, crate::materials::Material)>>,
 }
 
 impl Reader<'_> {
@@ -52,9 +55,10 @@ impl Reader<'_> {
         match q.get_ref() {
             Qty::Num(v) => Ok(*v),
             Qty::Text(t) => parse_quantity(t, dim, name).map_err(|e| {
-                self.err(ErrorKind::Unit, key, Some(q.span()), e.to_string()).hint(format!(
-                    "write a number in SI ({dim}) or a string like \"10 mm\", \"30e6 psi\""
-                ))
+                let hint = e.suggestion().unwrap_or_else(|| {
+                    format!("write a number in SI ({dim}) or a string like \"10 mm\", \"30e6 psi\"")
+                });
+                self.err(ErrorKind::Unit, key, Some(q.span()), e.to_string()).hint(hint)
             }),
         }
     }
@@ -123,7 +127,12 @@ impl Reader<'_> {
 
 /// Read `src` (the text of `file`, if any) into a [`Scene`], not yet validated.
 pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError> {
-    let cx = Reader { src, file, spans: RefCell::new(BTreeMap::new()) };
+    let cx = Reader {
+        src,
+        file,
+        spans: RefCell::new(BTreeMap::new()),
+        materials: RefCell::new(Vec::new()),
+    };
     // serde's messages name Rust types, not keys: `schema::explain` says it in plain words.
     let raw: RawScene =
         toml::from_str(src).map_err(|e| schema::explain(src, &e).in_file(cx.file.clone()))?;
@@ -153,7 +162,11 @@ pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError
         motion,
         outputs,
         solver,
-        source: Some(Arc::new(Source { text: Arc::from(src), spans: cx.spans.into_inner() })),
+        source: Some(Arc::new(Source {
+            text: Arc::from(src),
+            spans: cx.spans.into_inner(),
+            materials: cx.materials.into_inner(),
+        })),
     })
 }
 
@@ -262,17 +275,36 @@ fn substrate(cx: &Reader<'_>, raw: &RawScene) -> Result<Substrate, SceneError> {
     let sspan = raw.substrate.span();
     let model =
         cx.choice(&s.model, "substrate.model", &["homogeneous", "graded", "viscoelastic"])?;
-    let nu = cx.num(&s.nu, "substrate.nu");
+    let keys = |e_what| material::Keys {
+        table: "substrate",
+        span: sspan.clone(),
+        material: s.material.as_ref(),
+        e: s.e.as_ref(),
+        nu: s.nu.as_ref(),
+        e_what,
+    };
     Ok(match model {
-        "homogeneous" => {
-            let e =
-                cx.required(&s.e, "substrate.e", sspan, "Young's modulus, e.g. e = \"210 GPa\"")?;
-            Substrate::Homogeneous(Elastic {
-                e: cx.qty(e, "substrate.e", Dim::STRESS, "modulus")?,
-                nu,
-            })
-        }
+        "homogeneous" => Substrate::Homogeneous(material::elastic(
+            cx,
+            &keys(
+                "Young's modulus, e.g. e = \"210 GPa\" (or material = \"steel\" for both e and nu)",
+            ),
+        )?),
         "graded" => {
+            material::refuse(
+                cx,
+                "substrate",
+                s.material.as_ref(),
+                "a graded substrate takes e0, k and nu, not a named material",
+                "remove `material` and give e0, k and nu",
+            )?;
+            let nu = cx.required(
+                &s.nu,
+                "substrate.nu",
+                sspan.clone(),
+                "Poisson's ratio, e.g. nu = 0.3",
+            )?;
+            let nu = cx.num(nu, "substrate.nu");
             let k = cx.required(
                 &s.k,
                 "substrate.k",
@@ -301,19 +333,25 @@ fn substrate(cx: &Reader<'_>, raw: &RawScene) -> Result<Substrate, SceneError> {
             Substrate::Graded { e0, k: kv, nu }
         }
         _ => {
-            let e = cx.required(&s.e, "substrate.e", sspan.clone(), "the long-time modulus E")?;
-            let e = cx.qty(e, "substrate.e", Dim::STRESS, "modulus")?;
+            let elastic = material::elastic(
+                cx,
+                &keys("the long-time modulus E (or material = \"rubber\" for both e and nu)"),
+            )?;
             let a = cx.required(
                 &s.alpha,
                 "substrate.alpha",
                 sspan.clone(),
                 "the retardation time alpha (s)",
             )?;
-            let b =
-                cx.required(&s.beta, "substrate.beta", sspan, "the relaxation time beta (s)")?;
+            let b = cx.required(
+                &s.beta,
+                "substrate.beta",
+                sspan.clone(),
+                "the relaxation time beta (s)",
+            )?;
             let alpha = cx.qty(a, "substrate.alpha", Dim::TIME, "time")?;
             let beta = cx.qty(b, "substrate.beta", Dim::TIME, "time")?;
-            Substrate::Viscoelastic { elastic: Elastic { e, nu }, alpha, beta }
+            Substrate::Viscoelastic { elastic, alpha, beta }
         }
     })
 }
@@ -321,19 +359,31 @@ fn substrate(cx: &Reader<'_>, raw: &RawScene) -> Result<Substrate, SceneError> {
 fn indenter(cx: &Reader<'_>, raw: &RawScene) -> Result<Indenter, SceneError> {
     let Some(ind) = &raw.indenter else { return Ok(Indenter::Rigid) };
     let i = ind.get_ref();
-    Ok(match cx.choice(&i.model, "indenter.model", &["rigid", "homogeneous", "same"])? {
+    let model = cx.choice(&i.model, "indenter.model", &["rigid", "homogeneous", "same"])?;
+    if model != "homogeneous" {
+        material::refuse(
+            cx,
+            "indenter",
+            i.material.as_ref(),
+            &format!("a {model} indenter takes no material"),
+            "model = \"homogeneous\" with material = \"...\", or remove `material`",
+        )?;
+    }
+    Ok(match model {
         "rigid" => Indenter::Rigid,
         "same" => Indenter::Same,
-        _ => {
-            let e =
-                cx.required(&i.e, "indenter.e", ind.span(), "Young's modulus of the indenter")?;
-            let n =
-                cx.required(&i.nu, "indenter.nu", ind.span(), "Poisson's ratio of the indenter")?;
-            Indenter::Homogeneous(Elastic {
-                e: cx.qty(e, "indenter.e", Dim::STRESS, "modulus")?,
-                nu: cx.num(n, "indenter.nu"),
-            })
-        }
+        _ => Indenter::Homogeneous(material::elastic(
+            cx,
+            &material::Keys {
+                table: "indenter",
+                span: ind.span(),
+                material: i.material.as_ref(),
+                e: i.e.as_ref(),
+                nu: i.nu.as_ref(),
+                e_what:
+                    "Young's modulus of the indenter (or material = \"steel\" for both e and nu)",
+            },
+        )?),
     })
 }
 
@@ -698,7 +748,9 @@ fn surface(
                                 Some(u.span()),
                                 e.to_string(),
                             )
-                            .hint("a length unit, e.g. \"um\", \"nm\", \"m\"")
+                            .hint(e.suggestion().unwrap_or_else(
+                                || "a length unit, e.g. \"um\", \"nm\", \"m\"".to_string(),
+                            ))
                         })?
                 }
             };

@@ -120,10 +120,11 @@ static GEOMETRY: Table = Table {
 static SUBSTRATE: Table = Table {
     fields: &[
         req("model", Kind::Str(&["homogeneous", "graded", "viscoelastic"])),
+        f("material", Kind::Str(&[])),
         f("e", Kind::Qty("\"210 GPa\"")),
         f("e0", Kind::Qty("\"1767600 kgf/m^2.1\"")),
         f("k", Kind::Num),
-        req("nu", Kind::Num),
+        f("nu", Kind::Num),
         f("alpha", Kind::Qty("\"2 s\"")),
         f("beta", Kind::Qty("\"1 s\"")),
     ],
@@ -132,6 +133,7 @@ static SUBSTRATE: Table = Table {
 static INDENTER: Table = Table {
     fields: &[
         req("model", Kind::Str(&["rigid", "homogeneous", "same"])),
+        f("material", Kind::Str(&[])),
         f("e", Kind::Qty("\"210 GPa\"")),
         f("nu", Kind::Num),
     ],
@@ -313,7 +315,9 @@ fn check(v: &Spanned<DeValue<'_>>, kind: Kind, key: &str, out: &mut Vec<Problem>
     match kind {
         Kind::Str(choices) => {
             if !matches!(val, DeValue::String(_)) {
-                let hint = if choices.is_empty() {
+                let hint = if name == "material" {
+                    "a name in quotes, e.g. material = \"steel\" (docs/materials.md)".to_string()
+                } else if choices.is_empty() {
                     format!("write it in quotes, e.g. {name} = \"my scene\"")
                 } else {
                     format!(
@@ -707,4 +711,28 @@ fn syntax_error(src: &str, e: &toml::de::Error) -> SceneError {
         }
     }
     err
+}
+
+/// Every key of the format, dotted (keys of an array of tables as `geometry.patches.shape`),
+/// with the values a string key allows (empty when any string goes) or None for keys that
+/// are not strings: for the JSON Schema (`crate::json_schema`), which takes its enums from
+/// here so the two descriptions of the format cannot drift apart.
+pub(crate) fn keys() -> Vec<(String, Option<&'static [&'static str]>)> {
+    fn walk(t: &Table, prefix: &str, out: &mut Vec<(String, Option<&'static [&'static str]>)>) {
+        for f in t.fields {
+            let key =
+                if prefix.is_empty() { f.name.to_string() } else { format!("{prefix}.{}", f.name) };
+            match f.kind {
+                Kind::Str(c) => out.push((key, Some(c))),
+                Kind::Table(sub) | Kind::TableArray(sub) => {
+                    out.push((key.clone(), None));
+                    walk(sub, &key, out);
+                }
+                _ => out.push((key, None)),
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&TOP, "", &mut out);
+    out
 }
