@@ -17,6 +17,8 @@
 //!   → twist → rolling → load cycle → subsurface field) into an [`Outcome`] (result.json),
 //!   deciding nothing again ([`Evaluations`] counts what ran); [`run()`] is plan + execute;
 //! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing;
+//! - [`sweep`]: parameter sweeps (the cartesian product of varied keys, shards, the CSV
+//!   and Parquet table, merging shards);
 //! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
 //!   techniques per scene, from the planner alone.
 //!
@@ -35,6 +37,7 @@ pub mod plan;
 mod plots;
 mod raw;
 mod scene;
+pub mod sweep;
 pub mod units;
 
 pub use error::{ErrorKind, SceneError};
