@@ -395,8 +395,9 @@ fn stick_fraction(o: &Outcome) -> Option<f64> {
     } else {
         |i| (i[1] - i[0]).abs()
     };
-    let stick: f64 = z.stick.iter().map(measure).sum();
-    let total = stick + z.slip.iter().map(measure).sum::<f64>();
+    // fold from +0.0: an empty `sum` of f64 is -0.0.
+    let stick = z.stick.iter().map(measure).fold(0.0, |s, x| s + x);
+    let total = z.slip.iter().map(measure).fold(stick, |s, x| s + x);
     (total > 0.0).then(|| stick / total)
 }
 
