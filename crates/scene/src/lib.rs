@@ -42,7 +42,7 @@ pub mod units;
 
 pub use error::{ErrorKind, SceneError};
 pub use exec::outcome::{
-    ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax, FieldOut,
+    Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax, FieldOut,
     FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions, SolverOut,
     SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
 };
