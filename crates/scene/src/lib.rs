@@ -22,11 +22,34 @@
 //! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
 //!   techniques per scene, from the planner alone.
 //!
-//! ```no_run
+//! ```
 //! use stickslip_scene::{run, RunOptions, Scene};
-//! let scene = Scene::default_scene();
+//! let scene = Scene::from_toml_str(
+//!     r#"
+//! [geometry]
+//! kind = "cylinder"
+//! radius = "20 mm"
+//! [substrate]
+//! model = "homogeneous"
+//! e = "210 GPa"
+//! nu = 0.3
+//! [indenter]
+//! model = "same"
+//! [load]
+//! normal = "100 kN/m"
+//! tangential = "15 kN/m"
+//! friction = 0.3
+//! "#,
+//!     None,
+//! )
+//! .unwrap();
 //! let out = run(&scene, &RunOptions::default()).unwrap();
-//! println!("a = {} m, P = {} N/m", out.contact.a, out.contact.normal_load);
+//! assert!(out.audit.passed);
+//! // 2D Hertz: a^2 = 4 P R / (pi E*), E* = E / (2 (1 - nu^2)) for two steel bodies.
+//! let e_star = 210e9 / (2.0 * (1.0 - 0.3 * 0.3));
+//! let a = (4.0 * 100e3 * 0.02 / (std::f64::consts::PI * e_star)).sqrt();
+//! assert!((out.contact.a - a).abs() < 1e-12 * a);
+//! assert_eq!(out.forces.tangential, 15e3);
 //! ```
 
 mod error;
