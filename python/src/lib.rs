@@ -3,6 +3,9 @@
 //! given as paths, TOML text or dicts into TOML text, results into NumPy arrays, and the
 //! raw error into `SceneError` / `AuditError`.
 
+// SceneError carries file, position, key and hint for the user; one per call.
+#![allow(clippy::result_large_err)]
+
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 

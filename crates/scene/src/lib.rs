@@ -65,9 +65,9 @@ pub mod units;
 
 pub use error::{ErrorKind, SceneError};
 pub use exec::outcome::{
-    Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax, FieldOut,
-    FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions, SolverOut,
-    SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
+    Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
+    FieldOut, FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions,
+    SolverOut, SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
 };
 pub use output::{write_outputs, write_outputs_with, WriteOptions, Written};
 pub use overview::scenes_page;

@@ -26,6 +26,9 @@
 //! assert_eq!(table.rows[1][mu], stickslip_scene::sweep::Cell::Float(Some(0.4)));
 //! ```
 
+// SceneError carries file, position, key and hint for the user; one per point.
+#![allow(clippy::result_large_err)]
+
 mod table;
 mod vary;
 
@@ -168,7 +171,7 @@ impl Sweep {
         // Setting the keys can fail only for the document's structure, the same at every
         // point: check it once with the first point.
         // A misspelt varied key fails every point the same way: refuse it at once.
-        if s.len() > 0 {
+        if !s.is_empty() {
             if let Err(e) = Scene::from_toml_str(&s.point_text(0)?, s.file.clone()) {
                 if e.kind == ErrorKind::Schema {
                     return Err(e);
@@ -223,13 +226,12 @@ impl Sweep {
     /// # Errors
     /// A [`SceneError`] when the text is not TOML or a varied key's parent is not a table.
     pub fn point_text(&self, i: usize) -> Result<String, SceneError> {
-        let mut doc: toml_edit::DocumentMut = match self.text.parse() {
-            Ok(d) => d,
-            // The reader gives the located syntax error.
-            Err(_) => {
-                return Scene::from_toml_str(&self.text, self.file.clone()).map(|_| "".to_string())
-            }
-        };
+        // The text was read by the scene reader in `new`, so it is TOML; toml_edit keeps
+        // its layout.
+        let mut doc: toml_edit::DocumentMut = self.text.parse().map_err(|e| {
+            SceneError::new(ErrorKind::Syntax, format!("the scene is not TOML: {e}"))
+                .in_file(self.file.clone())
+        })?;
         for (v, x) in self.vary.iter().zip(self.values(i)) {
             let keys: Vec<&str> = v.key.split('.').collect();
             set(doc.as_table_mut(), &keys, x.to_toml(), false).map_err(|m| {

@@ -228,7 +228,7 @@ impl Table {
                         .collect();
                     let def: Vec<i16> = opt.iter().map(|x| i16::from(x.is_some())).collect();
                     let v: Vec<ByteArray> =
-                        opt.into_iter().flatten().map(|s| ByteArray::from(s)).collect();
+                        opt.into_iter().flatten().map(ByteArray::from).collect();
                     col.typed::<ByteArrayType>().write_batch(&v, Some(&def), None)?;
                 }
             }
