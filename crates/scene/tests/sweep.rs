@@ -118,6 +118,37 @@ fn bad_sweeps_are_refused_with_the_key() {
 }
 
 #[test]
+fn the_sweep_may_fix_what_the_scene_lacks_or_refuses() {
+    // The base asks for T = 50 kN/m > f P = 30 kN/m and is refused; the sweep replaces
+    // the load, and each point is checked on its own.
+    let base = SCENE.replace("tangential = \"15 kN/m\"", "tangential = \"50 kN/m\"");
+    assert_eq!(
+        Scene::from_toml_str(&base, None).unwrap_err().kind,
+        ErrorKind::Impossible,
+        "the base scene is refused (T > f P)"
+    );
+    let vary = [Vary::parse("load.tangential=10 kN/m,20 kN/m").unwrap()];
+    let t = Sweep::new(&base, None, &vary).unwrap().run(Shard::ALL, 600.0, |_| {});
+    for r in 0..2 {
+        assert_eq!(cell(&t, r, "status"), &Cell::Text(Some("ok".into())));
+    }
+    assert_eq!(cell(&t, 1, "tangential"), &Cell::Float(Some(20e3)));
+    // A key added by the sweep: [outputs] has no `plots` in this text.
+    let no_outputs = &SCENE[..SCENE.find("[outputs]").unwrap()];
+    let vary = [Vary::parse("outputs.plots=false").unwrap()];
+    let s = Sweep::new(no_outputs, None, &vary).unwrap();
+    assert!(
+        s.point_text(0).unwrap().contains("[outputs]\nplots = false"),
+        "{}",
+        s.point_text(0).unwrap()
+    );
+    // Not TOML: the reader's located syntax error.
+    let e = Sweep::new("[load\n", Some("x.toml".into()), &vary).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Syntax);
+    assert!(e.position.is_some(), "{e}");
+}
+
+#[test]
 fn mismatched_or_incomplete_shards_are_refused() {
     let s = sweep();
     let a = s.run(Shard { index: 1, count: 2 }, 600.0, |_| {});

@@ -134,13 +134,23 @@ fn sweep_error(file: Option<&PathBuf>, key: &str, message: String, hint: &str) -
 impl Sweep {
     /// A sweep of the scene `text` (read from `file`, for messages) over `vary`.
     ///
+    /// The scene itself need not be valid (a sweep may supply a missing key, or replace a
+    /// value the checks refuse); each point is read and checked on its own.
+    ///
     /// # Errors
-    /// A [`SceneError`]: the scene's own error when it does not read (so a sweep of a bad
-    /// scene fails at once, not once per point); a key varied twice; a varied key whose
-    /// place in the document is not a table; a varied key the scene format does not have
-    /// (the reader's schema error for the first point).
+    /// A [`SceneError`]: the reader's syntax error when `text` is not TOML; a key varied
+    /// twice; a varied key whose place in the document is not a table; a reading error
+    /// (syntax, schema, unit) of the first point, which would fail every point alike: a
+    /// key the format does not have, a value of the wrong type, a unit that does not read.
     pub fn new(text: &str, file: Option<PathBuf>, vary: &[Vary]) -> Result<Sweep, SceneError> {
-        Scene::from_toml_str(text, file.clone())?;
+        if let Err(e) = text.parse::<toml_edit::DocumentMut>() {
+            // The scene reader locates the error (file:line:column).
+            return Err(match Scene::from_toml_str(text, file.clone()) {
+                Err(se) => se,
+                Ok(_) => SceneError::new(ErrorKind::Syntax, format!("the scene is not TOML: {e}"))
+                    .in_file(file),
+            });
+        }
         for (i, v) in vary.iter().enumerate() {
             if vary[..i].iter().any(|w| w.key == v.key) {
                 return Err(sweep_error(
@@ -170,10 +180,11 @@ impl Sweep {
         };
         // Setting the keys can fail only for the document's structure, the same at every
         // point: check it once with the first point.
-        // A misspelt varied key fails every point the same way: refuse it at once.
+        // A reading error (a misspelt key, a missing table) fails every point the same way:
+        // refuse it at once. Range and combination refusals may depend on the point.
         if !s.is_empty() {
             if let Err(e) = Scene::from_toml_str(&s.point_text(0)?, s.file.clone()) {
-                if e.kind == ErrorKind::Schema {
+                if matches!(e.kind, ErrorKind::Syntax | ErrorKind::Schema | ErrorKind::Unit) {
                     return Err(e);
                 }
             }
@@ -226,8 +237,7 @@ impl Sweep {
     /// # Errors
     /// A [`SceneError`] when the text is not TOML or a varied key's parent is not a table.
     pub fn point_text(&self, i: usize) -> Result<String, SceneError> {
-        // The text was read by the scene reader in `new`, so it is TOML; toml_edit keeps
-        // its layout.
+        // `new` parsed the text already; toml_edit keeps its layout.
         let mut doc: toml_edit::DocumentMut = self.text.parse().map_err(|e| {
             SceneError::new(ErrorKind::Syntax, format!("the scene is not TOML: {e}"))
                 .in_file(self.file.clone())
