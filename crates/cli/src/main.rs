@@ -95,7 +95,8 @@ enum Command {
         scene: Option<PathBuf>,
     },
     /// Run a parameter sweep: the cartesian product of the --vary values, each point an
-    /// independent, audited run, gathered into one table (CSV and Parquet).
+    /// independent, audited run, gathered into one table (CSV and Parquet). A failed point
+    /// is a row with its reason; the status is 0 once the table is written.
     Sweep(sweep::SweepArgs),
     /// Merge the tables of a sweep's shards, checking that every point is there once.
     Merge(sweep::MergeArgs),

@@ -172,3 +172,24 @@ fn mismatched_or_incomplete_shards_are_refused() {
     assert!(e.0.contains("scene or the --vary differ"), "{e}");
     assert_eq!(merge(vec![b, a], &names).unwrap().rows.len(), 10);
 }
+
+#[test]
+fn column_kinds_survive_the_csv() {
+    use stickslip_scene::sweep::Kind;
+    let vary = [
+        Vary::parse("solver.grid=16,32").unwrap(),
+        Vary::parse("load.friction=1,0.5").unwrap(),
+        Vary::parse("load.normal=100 kN/m,200 kN/m").unwrap(),
+    ];
+    let s = Sweep::new(SCENE, None, &vary).unwrap();
+    let kinds: Vec<Kind> = s.columns()[3..6].iter().map(|c| c.1).collect();
+    assert_eq!(kinds, [Kind::Int, Kind::Float, Kind::Text]);
+    let t = s.run(Shard::ALL, 600.0, |_| {});
+    assert_eq!(cell(&t, 0, "solver.grid"), &Cell::Int(16));
+    assert_eq!(cell(&t, 0, "load.friction"), &Cell::Float(Some(1.0)));
+    let p = std::env::temp_dir().join(format!("stickslip-kinds-{}.csv", std::process::id()));
+    std::fs::write(&p, t.to_csv().unwrap()).unwrap();
+    let back = Table::read_csv(&p).unwrap();
+    std::fs::remove_file(&p).unwrap();
+    assert_eq!(back, t);
+}

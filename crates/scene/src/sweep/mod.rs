@@ -256,14 +256,20 @@ impl Sweep {
         Ok(doc.to_string())
     }
 
-    /// The table's columns: [`FIXED_HEAD`], one per varied key (numeric when all its values
-    /// are numbers), [`FIXED_TAIL`].
+    /// The table's columns: [`FIXED_HEAD`], one per varied key (integers when all its
+    /// values are whole numbers, numbers when all are numbers, else text), [`FIXED_TAIL`].
     pub fn columns(&self) -> Vec<(String, Kind)> {
         let head = FIXED_HEAD.iter().map(|(n, k)| (n.to_string(), *k));
-        let varied = self
-            .vary
-            .iter()
-            .map(|v| (v.key.clone(), if v.numeric() { Kind::Float } else { Kind::Text }));
+        let varied = self.vary.iter().map(|v| {
+            let kind = if v.integer() {
+                Kind::Int
+            } else if v.numeric() {
+                Kind::Float
+            } else {
+                Kind::Text
+            };
+            (v.key.clone(), kind)
+        });
         let tail = FIXED_TAIL.iter().map(|(n, k)| (n.to_string(), *k));
         head.chain(varied).chain(tail).collect()
     }
@@ -288,10 +294,10 @@ impl Sweep {
             Cell::Int(self.len() as i64),
         ];
         for (v, x) in self.vary.iter().zip(self.values(i)) {
-            row.push(if v.numeric() {
-                Cell::Float(x.as_number())
-            } else {
-                Cell::Text(Some(x.to_string()))
+            row.push(match x {
+                VaryValue::Integer(n) if v.integer() => Cell::Int(*n),
+                _ if v.numeric() => Cell::Float(x.as_number()),
+                _ => Cell::Text(Some(x.to_string())),
             });
         }
         match result {

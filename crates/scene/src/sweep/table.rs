@@ -89,8 +89,8 @@ impl Table {
     }
 
     /// Read a table written by [`Table::to_csv`]. The kinds of the fixed columns are known
-    /// ([`super::FIXED_HEAD`], [`super::FIXED_TAIL`]); a varied column is numeric when every
-    /// cell reads as a number, text otherwise.
+    /// ([`super::FIXED_HEAD`], [`super::FIXED_TAIL`]); a varied column is of integers when
+    /// every cell reads as one, numeric when every cell reads as a number, text otherwise.
     ///
     /// # Errors
     /// A [`TableError`] naming the file for a missing file, bad CSV, a missing fixed column
@@ -125,10 +125,14 @@ impl Table {
             .enumerate()
             .map(|(j, h)| {
                 let kind = fixed(h).unwrap_or_else(|| {
-                    let numeric = text_rows.iter().all(|r| {
-                        r.get(j).is_some_and(|c| c.is_empty() || c.parse::<f64>().is_ok())
-                    });
-                    if numeric {
+                    let all = |ok: fn(&str) -> bool| {
+                        text_rows.iter().all(|r| r.get(j).is_some_and(|c| ok(c)))
+                    };
+                    // Whole numbers are written without a point, other numbers with one
+                    // (`format_f64`), so the kind written is the kind read.
+                    if all(|c| c.parse::<i64>().is_ok()) {
+                        Kind::Int
+                    } else if all(|c| c.is_empty() || c.parse::<f64>().is_ok()) {
                         Kind::Float
                     } else {
                         Kind::Text

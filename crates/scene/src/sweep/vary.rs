@@ -217,6 +217,11 @@ impl Vary {
     pub fn numeric(&self) -> bool {
         self.values.iter().all(|v| v.as_number().is_some())
     }
+
+    /// True when every value is a whole number (the table's column is then of integers).
+    pub fn integer(&self) -> bool {
+        self.values.iter().all(|v| matches!(v, VaryValue::Integer(_)))
+    }
 }
 
 #[cfg(test)]
@@ -238,7 +243,8 @@ mod tests {
         assert_eq!(t, ["10 N", "20 N", "30 N"]);
         let v = Vary::parse("solver.grid=32,64").unwrap();
         assert_eq!(v.values, vec![VaryValue::Integer(32), VaryValue::Integer(64)]);
-        assert!(v.numeric());
+        assert!(v.numeric() && v.integer());
+        assert!(!Vary::parse("load.friction=1,0.5").unwrap().integer());
         let v = Vary::parse("solver.method=fast,lp").unwrap();
         assert_eq!(v.values[1], VaryValue::Text("lp".into()));
         assert!(!v.numeric());
