@@ -167,6 +167,14 @@ def test_the_frame_equals_the_cli_table(cli, tmp_path):
                    capture_output=True)
     table = pd.read_parquet(tmp_path / "sweep.parquet")
     pd.testing.assert_frame_equal(stickslip.sweep(HERTZ, VARY), table, check_exact=True)
+    # All three kinds of varied column (integers, numbers, text).
+    out = tmp_path / "kinds"
+    subprocess.run([cli, "sweep", str(HERTZ), "--vary", "solver.grid=16,32", *CLI_VARY,
+                    "--out", str(out)], check=True, capture_output=True)
+    kinds = pd.read_parquet(out / "sweep.parquet")
+    assert kinds["solver.grid"].dtype == np.int64
+    df = stickslip.sweep(HERTZ, {"solver.grid": [16, 32], **VARY})
+    pd.testing.assert_frame_equal(df, kinds, check_exact=True)
     # The CSV reads back to the same numbers.
     csv = pd.read_csv(tmp_path / "sweep.csv")
     np.testing.assert_array_equal(csv.tangential.to_numpy(), table.tangential.to_numpy())
