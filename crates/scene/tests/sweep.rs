@@ -170,7 +170,14 @@ fn mismatched_or_incomplete_shards_are_refused() {
     let c = other.run(Shard { index: 2, count: 2 }, 600.0, |_| {});
     let e = merge(vec![a.clone(), c], &names).unwrap_err();
     assert!(e.0.contains("scene or the --vary differ"), "{e}");
-    assert_eq!(merge(vec![b, a], &names).unwrap().rows.len(), 10);
+    assert_eq!(merge(vec![b.clone(), a.clone()], &names).unwrap().rows.len(), 10);
+    // A shard without points (12 shards of 10 points) merges: it adds nothing.
+    let empty = s.run(Shard { index: 12, count: 12 }, 600.0, |_| {});
+    assert!(empty.rows.is_empty());
+    let three = ["a".to_string(), "empty".to_string(), "b".to_string()];
+    assert_eq!(merge(vec![a, empty.clone(), b], &three).unwrap(), s.run(Shard::ALL, 600.0, |_| {}));
+    let e = merge(vec![empty], &names[..1]).unwrap_err();
+    assert!(e.0.contains("no rows"), "{e}");
 }
 
 #[test]

@@ -453,42 +453,48 @@ impl std::error::Error for MergeError {}
 /// A [`MergeError`] naming the tables (by `names`) that differ, the points missing or the
 /// points found twice.
 pub fn merge(tables: Vec<Table>, names: &[String]) -> Result<Table, MergeError> {
-    let mut it = tables.into_iter().zip(names);
-    let (mut all, first) = it.next().ok_or_else(|| MergeError("no tables to merge".into()))?;
-    let cell = |t: &Table, r: usize, c: &str| t.column(c).map(|j| t.rows[r][j].clone());
-    let ident = |t: &Table| {
-        let ids: std::collections::BTreeSet<String> =
-            (0..t.rows.len()).filter_map(|r| cell(t, r, "sweep").map(|c| c.to_text())).collect();
-        let ns: std::collections::BTreeSet<String> =
-            (0..t.rows.len()).filter_map(|r| cell(t, r, "points").map(|c| c.to_text())).collect();
-        (ids, ns)
-    };
-    let (ids0, ns0) = ident(&all);
-    if ids0.len() > 1 || ns0.len() > 1 {
-        return Err(MergeError(format!("{first} holds rows of more than one sweep")));
+    let header = |t: &Table| t.columns.iter().map(|c| c.0.clone()).collect::<Vec<_>>();
+    if names.len() != tables.len() {
+        return Err(MergeError(format!("{} tables but {} names", tables.len(), names.len())));
     }
-    for (mut t, name) in it {
-        let names_of = |t: &Table| t.columns.iter().map(|c| c.0.clone()).collect::<Vec<_>>();
-        if names_of(&t) != names_of(&all) {
+    let first = tables.first().ok_or_else(|| MergeError("no tables to merge".into()))?;
+    let (first_header, first_name) = (header(first), &names[0]);
+    // The sweep and its size, from the first row, with the table it came from.
+    let mut identity: Option<(String, String, &String)> = None;
+    for (t, name) in tables.iter().zip(names) {
+        if header(t) != first_header {
             return Err(MergeError(format!(
-                "{name} has the columns [{}], {first} has [{}]: they are not shards of one sweep",
-                names_of(&t).join(", "),
-                names_of(&all).join(", ")
+                "{name} has the columns [{}], {first_name} has [{}]: they are not shards of \
+                 one sweep",
+                header(t).join(", "),
+                first_header.join(", ")
             )));
         }
-        let (ids, ns) = ident(&t);
-        let same = |a: &std::collections::BTreeSet<String>,
-                    b: &std::collections::BTreeSet<String>| {
-            a.is_empty() || b.is_empty() || a == b
+        let (Some(js), Some(jn)) = (t.column("sweep"), t.column("points")) else {
+            return Err(MergeError(format!("{name} has no `sweep` or `points` column")));
         };
-        if !same(&ids, &ids0) || !same(&ns, &ns0) || ids.len() > 1 {
-            return Err(MergeError(format!(
-                "{name} is a shard of sweep {}, {first} of sweep {}: the scene or the --vary \
-                 differ",
-                ids.iter().next().map_or("?", String::as_str),
-                ids0.iter().next().map_or("?", String::as_str)
-            )));
+        for row in &t.rows {
+            let (id, n) = (row[js].to_text(), row[jn].to_text());
+            match &identity {
+                None => identity = Some((id, n, name)),
+                Some((id0, n0, name0)) if (&id, &n) != (id0, n0) => {
+                    return Err(MergeError(format!(
+                        "{name} holds sweep {id} ({n} points), {name0} sweep {id0} ({n0} \
+                         points): the scene or the --vary differ"
+                    )))
+                }
+                Some(_) => {}
+            }
         }
+    }
+    let Some((_, points, _)) = identity else {
+        return Err(MergeError("the tables hold no rows".into()));
+    };
+    let points: i64 = points.parse().map_err(|_| MergeError(format!("`{points}` points")))?;
+    // Tables without rows add nothing (and their inferred kinds mean nothing).
+    let mut tables = tables.into_iter().filter(|t| !t.rows.is_empty());
+    let mut all = tables.next().ok_or_else(|| MergeError("the tables hold no rows".into()))?;
+    for mut t in tables {
         for j in 0..all.columns.len() {
             if all.columns[j].1 != t.columns[j].1 {
                 all.make_text(j);
@@ -500,7 +506,6 @@ pub fn merge(tables: Vec<Table>, names: &[String]) -> Result<Table, MergeError> 
     let p = all.column("point").ok_or_else(|| MergeError("no point column".into()))?;
     let idx = |r: &Vec<Cell>| if let Cell::Int(i) = r[p] { i } else { -1 };
     all.rows.sort_by_key(idx);
-    let points: i64 = ns0.iter().next().and_then(|s| s.parse().ok()).unwrap_or(0);
     let mut seen = vec![0usize; points.max(0) as usize];
     for r in &all.rows {
         match usize::try_from(idx(r)).ok().and_then(|i| seen.get_mut(i)) {
@@ -513,14 +518,13 @@ pub fn merge(tables: Vec<Table>, names: &[String]) -> Result<Table, MergeError> 
             }
         }
     }
+    // The points where `want` holds, the first 20 listed.
     let list = |want: fn(usize) -> bool| {
-        let v: Vec<String> = seen
-            .iter()
-            .enumerate()
-            .filter(|(_, n)| want(**n))
-            .map(|(i, _)| i.to_string())
-            .collect();
-        (!v.is_empty()).then(|| v.join(", "))
+        let v: Vec<usize> =
+            seen.iter().enumerate().filter(|(_, n)| want(**n)).map(|(i, _)| i).collect();
+        let shown: Vec<String> = v.iter().take(20).map(ToString::to_string).collect();
+        let more = if v.len() > 20 { format!(", ... ({} in all)", v.len()) } else { String::new() };
+        (!v.is_empty()).then(|| shown.join(", ") + &more)
     };
     if let Some(twice) = list(|n| n > 1) {
         return Err(MergeError(format!("points found more than once: {twice}")));
