@@ -262,10 +262,7 @@ def sweep(scene, vary, client=None, shard=None, time_limit=600.0):
     """
     text, file = _scene(scene)
     specs = _specs(vary)
-    try:
-        s = _call(_stickslip.Sweep, text, specs, file)
-    except ValueError as e:
-        raise ValueError(str(e)) from None
+    s = _call(_stickslip.Sweep, text, specs, file)  # ValueError for a bad specification
     i, n = shard if shard is not None else (1, 1)
     points = s.points(i, n)
     if client is None:
