@@ -8,6 +8,10 @@
 //!   `--json`.
 //! - `stickslip explain [SCENE]`: print the plan (effects on and off with reasons, the
 //!   technique per effect, the estimated cost) without computing anything.
+//! - `stickslip sweep SCENE --vary KEY=VALUES... --out DIR [--shard I/N]`: a parameter
+//!   sweep, every point an independent audited run, into one table (sweep.csv and
+//!   sweep.parquet; failed points are rows with their reason); `stickslip merge SHARDS...
+//!   --out DIR` merges shard tables, checking that none is missing (`sweep.rs`).
 //! - `stickslip reproduce [--out DIR]`: the verification pages (stickslip-verification).
 //! - `stickslip accuracy [--quick|--full] [--out DIR]`: the accuracy-versus-time report
 //!   (stickslip-benches).
@@ -40,6 +44,8 @@ use std::time::{Duration, Instant};
 
 use clap::{CommandFactory, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
+mod sweep;
+
 use stickslip_scene::{
     write_outputs_with, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, WriteOptions,
     Zones,
@@ -95,6 +101,12 @@ enum Command {
         /// Scene file (TOML); omit for the built-in default scene.
         scene: Option<PathBuf>,
     },
+    /// Run a parameter sweep: the cartesian product of the --vary values, each point an
+    /// independent, audited run, gathered into one table (CSV and Parquet). A failed point
+    /// is a row with its reason; the status is 0 once the table is written.
+    Sweep(sweep::SweepArgs),
+    /// Merge the tables of a sweep's shards, checking that every point is there once.
+    Merge(sweep::MergeArgs),
     /// Regenerate the verification pages (published values against computed ones).
     Reproduce {
         /// Output directory.
@@ -418,6 +430,8 @@ fn dispatch(cli: &Cli) -> Result<(), Failure> {
             cmd_run(scene.as_ref(), out.as_ref(), *force, *json, *time_limit)
         }
         Command::Explain { scene } => cmd_explain(scene.as_ref()),
+        Command::Sweep(a) => sweep::cmd_sweep(a),
+        Command::Merge(a) => sweep::cmd_merge(a),
         Command::Reproduce { out } => cmd_reproduce(out),
         Command::Accuracy { quick, full, out } => cmd_accuracy(*quick && !*full, out),
         Command::New(a) => new::run(a),

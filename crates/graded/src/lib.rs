@@ -12,6 +12,19 @@
 //! - [`cylinder`]: the rigid cylinder (corrected eq 15, eq 16, A4), the approach relative to a
 //!   datum (finite for every $k$, exact homogeneous limit at $k=0$, B), eq 32 (A5).
 //!
+//! ```
+//! use stickslip_graded::{half_width_from_load, load_from_half_width, GradedMaterial};
+//! // Seed 000, Table 1: E0 = 1767600 kgf/m^2.1, k = 0.1, nu = 0.3, R = 0.3 m.
+//! let m = GradedMaterial::new(1767600.0 * 9.80665, 0.1, 0.3).unwrap();
+//! let p = load_from_half_width(&m, 0.3, 0.0178).unwrap();
+//! // The two directions of eq 15 invert each other.
+//! let a = half_width_from_load(&m, 0.3, p).unwrap();
+//! assert!((a - 0.0178).abs() < 1e-15);
+//! // P grows as a^(2 + k): doubling a multiplies P by 2^2.1.
+//! let p2 = load_from_half_width(&m, 0.3, 2.0 * 0.0178).unwrap();
+//! assert!((p2 / p - 2f64.powf(2.1)).abs() < 1e-12);
+//! ```
+//!
 //! # Conventions
 //! $x$ along the surface, $y > 0$ depth into the substrate; compression negative; $p>0$
 //! pushes into the substrate, $q>0$ acts on it in $+x$; $u_y > 0$ into the substrate. At the

@@ -20,6 +20,20 @@
 //! - [`cattaneo2d`]: the 2D Cattaneo–Mindlin partial-slip traction and its field
 //!   (FORMULAS.md C).
 //!
+//! ```
+//! use stickslip_halfspace::hertz::HertzLine;
+//! use stickslip_halfspace::material::{composite_modulus, Material};
+//! // Steel cylinder (R = 20 mm) on steel under P = 100 kN/m.
+//! let steel = Material::new(210e9, 0.3).unwrap();
+//! let e_star = composite_modulus(&steel, &steel); // E / (2 (1 - nu^2))
+//! assert!((e_star - 210e9 / (2.0 * (1.0 - 0.09))).abs() < 1e-3);
+//! let h = HertzLine::new(100e3, 0.02, e_star).unwrap();
+//! // a^2 = 4 P R / (pi E*), p0 = 2 P / (pi a)
+//! let a = (4.0 * 100e3 * 0.02 / (std::f64::consts::PI * e_star)).sqrt();
+//! assert!((h.half_width() - a).abs() < 1e-15);
+//! assert!((h.max_pressure() - 2.0 * 100e3 / (std::f64::consts::PI * a)).abs() < 1e-6);
+//! ```
+//!
 //! # Conventions (all modules)
 //!
 //! - Compressive stress is negative. A contact pressure $p \ge 0$ pushes into the body.

@@ -15,6 +15,15 @@
 //! The [`battery`] module holds the accuracy-versus-cost test battery (closed forms and mpmath
 //! values) used by the tests and the project's report.
 //!
+//! ```
+//! use stickslip_quad::{gauss_kronrod, AdaptiveConfig};
+//! // The integral of sin over [0, pi] is 2; the estimate brackets it.
+//! let est = gauss_kronrod(f64::sin, 0.0, std::f64::consts::PI, &AdaptiveConfig::default())
+//!     .unwrap();
+//! assert!((est.value - 2.0).abs() <= est.error.max(4.0 * f64::EPSILON));
+//! assert!(est.error < 1e-10 && est.evals > 0);
+//! ```
+//!
 //! This crate knows nothing about contact mechanics (ARCHITECTURE.md); the kernels of
 //! `docs/FORMULAS.md` appear only as test integrands.
 

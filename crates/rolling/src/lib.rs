@@ -8,6 +8,18 @@
 //!   brackets for both roots; pressure and shear (eqs 12, 13) by quadrature.
 //! - [`sweep`]: the seed's claim $l\approx\sqrt{8KRP\beta/\alpha}$ over its stated grid.
 //!
+//! ```
+//! use stickslip_rolling::{carter, CarterParams};
+//! // A steel wheel (R = 0.46 m) on steel, P = 500 kN/m, friction 0.3, creep 5e-4.
+//! let p = CarterParams::new(210e9, 0.3, 0.46, 500e3, 0.3, 5e-4).unwrap();
+//! let s = carter(&p);
+//! // The stick zone is shorter than the contact, and the creep force below f P.
+//! assert!(s.stick_length > 0.0 && s.stick_length < 2.0 * s.half_width);
+//! assert!(s.tangential_force.abs() < 0.3 * 500e3);
+//! // The normal load is carried: P = pi a p0 / 2 (Hertz).
+//! assert!((std::f64::consts::PI * s.half_width * s.peak_pressure / 2.0 - 500e3).abs() < 1e-6);
+//! ```
+//!
 //! Units are SI throughout: $E$ \[Pa\], $R$ and lengths \[m\], $P$ and $Q$ \[N/m\] (per unit length
 //! of the cylinders), stresses \[Pa\], moments \[N\] (N·m per m), $\alpha, \beta$ \[s\], $w$ \[m/s\];
 //! creep $\delta$, friction $\rho$ and $\nu$ are dimensionless.

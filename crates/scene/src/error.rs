@@ -71,6 +71,8 @@ pub struct SceneError {
     pub message: String,
     /// What is allowed, or how to fix it.
     pub hint: Option<String>,
+    /// The checks that failed, for an [`ErrorKind::Audit`] error; empty otherwise.
+    pub checks: Vec<crate::exec::outcome::Check>,
 }
 
 impl SceneError {
@@ -82,7 +84,15 @@ impl SceneError {
     }
 
     pub(crate) fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
-        Self { kind, file: None, position: None, key: None, message: message.into(), hint: None }
+        Self {
+            kind,
+            file: None,
+            position: None,
+            key: None,
+            message: message.into(),
+            hint: None,
+            checks: Vec::new(),
+        }
     }
 
     pub(crate) fn key(mut self, key: impl Into<String>) -> Self {

@@ -20,14 +20,39 @@
 //! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing;
 //! - [`json_schema`]: the JSON Schema of the format, for editors; [`templates`]: the
 //!   commented starting scenes of `stickslip new`;
+//! - [`sweep`]: parameter sweeps (the cartesian product of varied keys, shards, the CSV
+//!   and Parquet table, merging shards);
 //! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
 //!   techniques per scene, from the planner alone.
 //!
-//! ```no_run
+//! ```
 //! use stickslip_scene::{run, RunOptions, Scene};
-//! let scene = Scene::default_scene();
+//! let scene = Scene::from_toml_str(
+//!     r#"
+//! [geometry]
+//! kind = "cylinder"
+//! radius = "20 mm"
+//! [substrate]
+//! model = "homogeneous"
+//! e = "210 GPa"
+//! nu = 0.3
+//! [indenter]
+//! model = "same"
+//! [load]
+//! normal = "100 kN/m"
+//! tangential = "15 kN/m"
+//! friction = 0.3
+//! "#,
+//!     None,
+//! )
+//! .unwrap();
 //! let out = run(&scene, &RunOptions::default()).unwrap();
-//! println!("a = {} m, P = {} N/m", out.contact.a, out.contact.normal_load);
+//! assert!(out.audit.passed);
+//! // 2D Hertz: a^2 = 4 P R / (pi E*), E* = E / (2 (1 - nu^2)) for two steel bodies.
+//! let e_star = 210e9 / (2.0 * (1.0 - 0.3 * 0.3));
+//! let a = (4.0 * 100e3 * 0.02 / (std::f64::consts::PI * e_star)).sqrt();
+//! assert!((out.contact.a - a).abs() < 1e-12 * a);
+//! assert_eq!(out.forces.tangential, 15e3);
 //! ```
 
 mod error;
@@ -40,14 +65,15 @@ pub mod plan;
 mod plots;
 mod raw;
 mod scene;
+pub mod sweep;
 pub mod templates;
 pub mod units;
 
 pub use error::{ErrorKind, SceneError};
 pub use exec::outcome::{
-    ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax, FieldOut,
-    FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions, SolverOut,
-    SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
+    Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
+    FieldOut, FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions,
+    SolverOut, SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
 };
 pub use output::{write_outputs, write_outputs_with, WriteOptions, Written};
 pub use overview::scenes_page;

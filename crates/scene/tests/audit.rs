@@ -88,4 +88,7 @@ fn a_lattice_too_coarse_for_the_stick_zone_is_refused_with_the_grid_key() {
     assert_eq!(e.key.as_deref(), Some("solver.grid"), "{e}");
     assert_eq!(e.position.map(|p| p.0), Some(15), "{e}");
     assert!(e.message.contains("lattice sampling"), "{e}");
+    // The failed checks travel with the error (the Python package's AuditError.checks).
+    assert!(!e.checks.is_empty() && e.checks.iter().all(|c| !c.pass), "{:?}", e.checks);
+    assert_eq!(e.checks[0].name, "lattice sampling");
 }

@@ -13,6 +13,17 @@
 //! * [`normal`]: normal contact of any surface on a lattice (constrained conjugate
 //!   gradients, free or periodic), whose contact feeds the tangential solvers.
 //!
+//! ```
+//! use stickslip_traction::closed::Mindlin;
+//! // Seed 002, Example 1: a = 0.0446 in, P = 2160 lbf, f = 0.1, T = 144 lbf.
+//! let m = Mindlin::new(0.0446, 2160.0, 0.1, 144.0).unwrap();
+//! // Stick radius a* = a (1 - T/(fP))^(1/3).
+//! let want = 0.0446 * (1.0f64 - 144.0 / 216.0).cbrt();
+//! assert!((m.stick_radius() - want).abs() < 1e-15);
+//! // The traction is zero outside the contact.
+//! assert_eq!(m.traction(0.05), 0.0);
+//! ```
+//!
 //! Units: any consistent set (SI, or inch–lbf–psi as in seed 002's examples).
 #![cfg_attr(docsrs, feature(doc_auto_cfg))]
 

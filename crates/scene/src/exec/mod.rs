@@ -118,6 +118,7 @@ fn audit_failure(plan: &Plan, out: &Outcome) -> SceneError {
         format!("the result failed its audit and was not written: {list}"),
     )
     .hint(hint);
+    e.checks = failed.into_iter().cloned().collect();
     if let Some(k) = key {
         e = e.key(k);
     }
