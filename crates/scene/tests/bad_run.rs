@@ -56,6 +56,9 @@ fn cases() -> Vec<Case> {
         Case { name: "rolling with a prescribed tangential load", err: parse(&format!("{}tangential = 10.0\n[motion]\nkind = \"rolling\"\nspeed = 0.01\n", visco)), kind: ErrorKind::Impossible, key: "load.tangential", line: Some(15) },
         Case { name: "rolling with a rigid indenter", err: parse(&format!("{}[motion]\nkind = \"rolling\"\nspeed = 0.01\n", visco.replace("model = \"same\"", "model = \"rigid\""))), kind: ErrorKind::Unsupported, key: "indenter.model", line: Some(11) },
         Case { name: "moment and tangential load together by the LP", err: parse(&format!("{SPHERE}tangential = \"10 lbf\"\nmoment = 0.1\n[solver]\nmethod = \"lp\"\n")), kind: ErrorKind::Unsupported, key: "load.moment", line: Some(14) },
+        // 0.7 f P and 0.7 of Lubkin's moment (3 pi f P a/16 = 5.87 lbf in) together lie outside
+        // the limit surface (each alone is carried): refused before solving.
+        Case { name: "force and moment together beyond gross slip", err: parse(&format!("{SPHERE}tangential = \"151 lbf\"\nmoment = \"4.1 lbf in\"\n")), kind: ErrorKind::Impossible, key: "load.moment", line: Some(14) },
         Case { name: "moment beyond Lubkin's gross slip", err: parse(&format!("{SPHERE}moment = 1.0\n")), kind: ErrorKind::Impossible, key: "load.moment", line: Some(13) },
         Case { name: "3D subsurface field without its depth axis z", err: parse(&format!("{SPHERE}[outputs]\nfield = {{ x = [-1.0, 1.0, 5], y = [0.1, 1.0, 5] }}\n")), kind: ErrorKind::Schema, key: "outputs.field", line: Some(14) },
         Case { name: "loading cycle on a cylinder", err: parse(&format!("{ROLLER}[outputs]\ncycle = {{ amplitude = 0.5 }}\n")), kind: ErrorKind::Unsupported, key: "outputs.cycle", line: Some(13) },

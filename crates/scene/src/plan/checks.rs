@@ -137,6 +137,15 @@ pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
             };
             ContactGrid::hertz_ellipse(a, b, p, n, n)
         }
+        Geometry::Sphere { radius } if l.tangential != 0.0 => {
+            let NormalLoad::Force(p) = l.normal else { return Ok(()) };
+            let sub = substrate_material(&scene.substrate)?;
+            let ind = indenter_material(scene, &sub)?;
+            let Ok(h) = HertzSphere::new(p, *radius, composite_modulus(&sub, &ind)) else {
+                return Ok(());
+            };
+            ContactGrid::hertz_circle(h.contact_radius(), p, n)
+        }
         Geometry::Patches(ps) => {
             let (lo, hi) = crate::scene::patch_bounds(ps);
             let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
@@ -156,6 +165,24 @@ pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
             ),
             format!("reduce the moment below {cap:.4e} N m (less when a tangential force acts too)"),
         ));
+    }
+    if l.tangential != 0.0 && !l.sliding {
+        // Together a force and a moment are carried only inside the limit surface of the
+        // contact's friction; beyond it the solver would run out of stick mid-way.
+        let d = l.direction_deg.to_radians();
+        let t = (l.tangential * d.cos(), l.tangential * d.sin());
+        let lambda = grid.load_capacity_factor(l.friction, t, l.moment);
+        if lambda < 1.0 {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.moment",
+                format!(
+                    "the tangential force {:.6e} N and the moment {:.6e} N m together exceed what friction carries on this contact: at most {lambda:.4} times this combination can be carried before the contact slides (gross slip, found on the lattice of solver.grid = {n})",
+                    l.tangential, l.moment
+                ),
+                format!("scale load.tangential and load.moment by less than {lambda:.4}, or reduce one of them"),
+            ));
+        }
     }
     Ok(())
 }
