@@ -93,7 +93,7 @@ pub fn run(scene: &Scene, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> 
 }
 pub use scene::{
     Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
-    NormalLoad, Outputs, Patch, PatchShape, Scene, SceneBuilder, SolverOptions, Source, Substrate,
-    DEFAULT_SCENE, MAX_GRID,
+    NormalLoad, NormalSweep, Outputs, Patch, PatchShape, Scene, SceneBuilder, SolverOptions,
+    Source, Substrate, DEFAULT_SCENE, MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};

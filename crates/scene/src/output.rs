@@ -205,6 +205,17 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)
         }
         files.push(("cycle.csv".to_string(), std::mem::take(&mut s)));
     }
+    if let Some(c) = &out.load_curve {
+        s.push_str("normal_N,approach_m,area_m2,fraction,p0_Pa,iterations\n");
+        for i in 0..c.normal.len() {
+            let _ = writeln!(
+                s,
+                "{},{},{},{},{},{}",
+                c.normal[i], c.approach[i], c.area[i], c.fraction[i], c.p0[i], c.iterations[i]
+            );
+        }
+        files.push(("load_curve.csv".to_string(), std::mem::take(&mut s)));
+    }
     if plots {
         let svgs = crate::plots::render(out).map_err(|e| {
             SceneError::new(ErrorKind::Io, format!("cannot draw the plots: {e}"))
@@ -493,7 +504,7 @@ fn foreign_files(dir: &Path) -> Result<Vec<String>, std::io::Error> {
         return Ok(Vec::new());
     }
     let ours = |n: &str| {
-        matches!(n, "result.json" | "surface.csv" | "field.csv" | "cycle.csv")
+        matches!(n, "result.json" | "surface.csv" | "field.csv" | "cycle.csv" | "load_curve.csv")
             || ((n.ends_with(".svg") || n.ends_with(".npy")) && !n.starts_with('.'))
     };
     let json_ok = std::fs::read_to_string(dir.join("result.json"))

@@ -16,6 +16,17 @@ pub(crate) enum Qty {
 
 pub(crate) type SQty = Spanned<Qty>;
 
+/// `load.normal`: one force, or a sweep `[from, to, steps]`.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(untagged)]
+pub(crate) enum RawNormal {
+    /// One force.
+    One(Qty),
+    /// A load sweep: from, to (forces), and the number of steps (spans inside an untagged
+    /// value are not available; refusals point at the array).
+    Sweep(Vec<Qty>),
+}
+
 /// In the JSON Schema a quantity is a number (SI) or a string that starts with a number; the
 /// unit and its dimension are the reader's to check (`crate::units`).
 impl JsonSchema for Qty {
@@ -243,9 +254,10 @@ pub(crate) struct RawIndenter {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawLoad {
-    /// The normal force: N/m for a cylinder or punch (2D), N otherwise.
-    #[schemars(with = "Option<Qty>")]
-    pub normal: Option<SQty>,
+    /// The normal force: N/m for a cylinder or punch (2D), N otherwise; for a surface also a
+    /// load sweep `[from, to, steps]`, e.g. ["1 N", "100 N", 20].
+    #[schemars(with = "Option<RawNormal>")]
+    pub normal: Option<Spanned<RawNormal>>,
     /// Instead of normal: the contact half-width (length).
     #[schemars(with = "Option<Qty>")]
     pub half_width: Option<SQty>,

@@ -203,12 +203,16 @@ fn loads_beyond_the_capacity_name_the_load_key() {
     assert_eq!(e.key.as_deref(), Some("load.moment"));
     assert!(e.position.is_some());
     // A force below f P (1312.5 lbf) with a moment on top that together exceed what the
-    // contact can carry: the solver finds no stick element left and says which load to
-    // reduce (not "please report").
-    let s = parse(&base.replace("\"700 lbf\"", "\"1300 lbf\""));
-    let e = run(&s, &RunOptions::default()).unwrap_err();
+    // contact can carry (outside its limit surface): refused before solving, with the factor
+    // by which the pair could be scaled.
+    let e = Scene::from_toml_str(
+        &base.replace("\"700 lbf\"", "\"1300 lbf\""),
+        Some("test.toml".into()),
+    )
+    .unwrap_err();
     println!("{e}");
-    assert_eq!(e.kind, ErrorKind::Solver);
-    assert_eq!(e.key.as_deref(), Some("load.tangential"));
-    assert!(e.hint.unwrap().contains("reduce"));
+    assert_eq!(e.kind, ErrorKind::Impossible);
+    assert_eq!(e.key.as_deref(), Some("load.moment"));
+    assert!(e.position.is_some());
+    assert!(e.hint.unwrap().contains("scale load.tangential and load.moment by less than"));
 }

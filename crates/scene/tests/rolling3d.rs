@@ -200,3 +200,51 @@ creepage = { longitudinal = 5e-4, spin = "1 1/m" }
     assert!(d < 0.03, "{d}");
     assert!(a.audit.passed && b.audit.passed);
 }
+
+/// A load sweep on a surface: the sphere given as a profile, 8 forces from 1 N to 20 N. At
+/// every step the area and the approach follow Hertz (a^3 = 3PR/(4E*), approach a^2/R:
+/// an independent closed form) to the lattice's resolution (a within one cell, approach
+/// 2 %), and the last step is the scene's result.
+#[test]
+fn a_surface_load_sweep_follows_hertz() {
+    let scene = r#"[geometry]
+kind = "surface"
+boundary = "free"
+size = ["0.8 mm", "0.8 mm"]
+cells = [128, 128]
+[geometry.profile]
+shape = "sphere"
+radius = "10 mm"
+[substrate]
+model = "homogeneous"
+e = "210 GPa"
+nu = 0.3
+[indenter]
+model = "same"
+[load]
+normal = ["1 N", "20 N", 8]
+"#;
+    let out = run(&Scene::from_toml_str(scene, None).unwrap(), &RunOptions::default()).unwrap();
+    let c = out.load_curve.as_ref().expect("load_curve");
+    assert_eq!(c.normal.len(), 8);
+    let (r, e_star) = (0.01, 210e9 / (2.0 * (1.0 - 0.09)));
+    let h = 0.8e-3 / 128.0;
+    for i in 0..8 {
+        let want_p = 20f64.powf(i as f64 / 7.0);
+        assert!((c.normal[i] / want_p - 1.0).abs() < 1e-6, "step {i}: {}", c.normal[i]);
+        let a = (3.0 * c.normal[i] * r / (4.0 * e_star)).cbrt();
+        let a_lattice = (c.area[i] / std::f64::consts::PI).sqrt();
+        assert!((a_lattice - a).abs() < h, "step {i}: a {a_lattice} vs Hertz {a}");
+        assert!(
+            (c.approach[i] / (a * a / r) - 1.0).abs() < 0.02,
+            "step {i}: approach {}",
+            c.approach[i]
+        );
+        if i > 0 {
+            assert!(c.area[i] > c.area[i - 1]);
+        }
+    }
+    assert!((out.contact.normal_load - 20.0).abs() < 1e-9 * 20.0);
+    assert!(out.audit.passed);
+    println!("iterations per step: {:?}", c.iterations);
+}

@@ -82,6 +82,7 @@ pub(crate) struct Parts {
     pub field: Field,
     pub rolling: Option<RollingOut>,
     pub cycle: Option<CycleOut>,
+    pub load_curve: Option<outcome::LoadCurve>,
 }
 
 /// Points `lo..=hi`, evenly spaced; the midpoint when `n == 1`.
@@ -208,6 +209,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         },
         rolling: parts.rolling,
         cycle: parts.cycle,
+        load_curve: parts.load_curve,
         audit: Default::default(),
         evaluations: cx.ev,
         notes: std::mem::take(&mut cx.notes),
@@ -251,6 +253,7 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
         field: Field::Plane(field),
         rolling: None,
         cycle: None,
+        load_curve: None,
     })
 }
 
@@ -282,6 +285,7 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         Some(f) => Field::Volume(Box::new(field::contact(f, &n, &lat, cx)?)),
         None => Field::default(),
     };
+    let load_curve = n.surface.as_ref().and_then(|s| s.curve.clone());
     Ok(Parts {
         contact: ContactOut {
             a: n.ax,
@@ -311,5 +315,6 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         field,
         rolling: None,
         cycle,
+        load_curve,
     })
 }

@@ -7,15 +7,16 @@ use stickslip_graded::{GradedMaterial, RigidCylinder};
 use stickslip_halfspace::hertz::{HertzEllipse, HertzLine, HertzSphere};
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_traction::{
-    Boundary, ContactGrid, NormalLoad as TNormalLoad, NormalProblem, Tolerance,
+    Boundary, ContactGrid, NormalLoad as TNormalLoad, NormalOperator, NormalProblem, Tolerance,
 };
 
 use super::lattice::{self, Lattice};
+use super::outcome::LoadCurve;
 use super::{solver_err, Ctx};
 use crate::error::ErrorKind;
 use crate::error::SceneError;
 use crate::plan::recipe::{ContactNormal, ContactRecipe, LineLoad, LineNormal, SurfaceLoad};
-use crate::scene::{patch_bounds, Patch, SurfaceBoundary};
+use crate::scene::{patch_bounds, NormalSweep, Patch, SurfaceBoundary};
 
 /// The normal solution of a line contact.
 #[derive(Debug, Clone, Copy)]
@@ -143,6 +144,8 @@ pub(crate) struct SurfaceContact {
     pub area: f64,
     pub fraction: f64,
     pub gap: Vec<Vec<f64>>,
+    /// The load sweep's curves, when the scene asks for one.
+    pub curve: Option<LoadCurve>,
 }
 
 /// The normal contact of a 3D recipe, and the lattice of `r.grid` elements per side.
@@ -150,8 +153,8 @@ pub(crate) fn contact(r: &ContactRecipe, cx: &mut Ctx<'_>) -> Result<ContactSolu
     let n = r.grid;
     // (semi-axes, peak pressure, load, approach) and the grid with its lattice corner and size
     let ((ax, ay, p0, load, indentation), (grid, x0, y0, nx, ny)) = match &r.normal {
-        ContactNormal::Surface { surface, load, tolerance } => {
-            return surface_contact(surface, *load, *tolerance, r, cx);
+        ContactNormal::Surface { surface, load, tolerance, sweep } => {
+            return surface_contact(surface, *load, *tolerance, *sweep, r, cx);
         }
         ContactNormal::Sphere { radius, force, e_star } => {
             let h = HertzSphere::new(*force, *radius, *e_star)
@@ -208,6 +211,7 @@ fn surface_contact(
     s: &crate::scene::Surface,
     load: SurfaceLoad,
     tolerance: f64,
+    sweep: Option<NormalSweep>,
     r: &ContactRecipe,
     cx: &mut Ctx<'_>,
 ) -> Result<ContactSolution, SceneError> {
@@ -230,14 +234,45 @@ fn surface_contact(
     let problem = NormalProblem::new(nx, ny, (hx, hy), &gap, r.bodies, boundary)
         .map_err(surface_err)?
         .with_tolerance(tol);
-    cx.progress("normal contact", 0, 1);
-    let sol = problem
-        .solve(match load {
-            SurfaceLoad::Force(p) => TNormalLoad::Force(p),
-            SurfaceLoad::Approach(d) => TNormalLoad::Approach(d),
-        })
-        .map_err(surface_err)?;
-    cx.progress("normal contact", 1, 1);
+    let last = match load {
+        SurfaceLoad::Force(p) => TNormalLoad::Force(p),
+        SurfaceLoad::Approach(d) => TNormalLoad::Approach(d),
+    };
+    // A load sweep: each step warm-started from the one before; the last is the scene's
+    // load and goes on to the later stages.
+    let steps: Vec<TNormalLoad> = match (sweep, load) {
+        (Some(sw), SurfaceLoad::Force(p)) => {
+            sw.forces(p).into_iter().map(TNormalLoad::Force).collect()
+        }
+        _ => vec![last],
+    };
+    let op = NormalOperator::new(&problem);
+    let mut curve = sweep.map(|_| LoadCurve {
+        normal: Vec::new(),
+        approach: Vec::new(),
+        area: Vec::new(),
+        fraction: Vec::new(),
+        p0: Vec::new(),
+        iterations: Vec::new(),
+    });
+    let mut warm: Option<Vec<f64>> = None;
+    let mut sol = None;
+    for (i, step) in steps.iter().enumerate() {
+        cx.progress("normal contact", i, steps.len());
+        let s = problem.solve_with(&op, *step, warm.as_deref()).map_err(surface_err)?;
+        if let Some(c) = curve.as_mut() {
+            c.normal.push(s.force);
+            c.approach.push(s.approach);
+            c.area.push(s.area);
+            c.fraction.push(s.fraction);
+            c.p0.push(s.peak_pressure);
+            c.iterations.push(s.info.iterations);
+        }
+        warm = Some(s.pressure.clone());
+        sol = Some(s);
+    }
+    cx.progress("normal contact", steps.len(), steps.len());
+    let Some(sol) = sol else { return Err(solver_err("normal-contact solver", "no load step")) };
     if sol.no_contact {
         return Err(SceneError::new(
             ErrorKind::Impossible,
@@ -287,7 +322,7 @@ fn surface_contact(
         indentation: Some(sol.approach),
         grid,
         lattice: lat,
-        surface: Some(SurfaceContact { area: sol.area, fraction: sol.fraction, gap: gaps }),
+        surface: Some(SurfaceContact { area: sol.area, fraction: sol.fraction, gap: gaps, curve }),
     })
 }
 

@@ -401,6 +401,23 @@ pub struct RollingOut {
     pub response: &'static str,
 }
 
+/// `load_curve` in result.json: one entry per step of a surface's load sweep.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LoadCurve {
+    /// Normal force of each step (N).
+    pub normal: Vec<f64>,
+    /// Approach of the bodies (m).
+    pub approach: Vec<f64>,
+    /// Contact area (m^2).
+    pub area: Vec<f64>,
+    /// Fraction of the lattice in contact.
+    pub fraction: Vec<f64>,
+    /// Peak pressure (Pa).
+    pub p0: Vec<f64>,
+    /// Iterations of the normal solver per step (warm-started from the step before).
+    pub iterations: Vec<usize>,
+}
+
 /// `cycle` in result.json: the Mindlin–Deresiewicz loop.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CycleOut {
@@ -465,6 +482,9 @@ pub struct Outcome {
     /// Loading cycle, when asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cycle: Option<CycleOut>,
+    /// A surface's load sweep: the area-load and approach-load curves.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_curve: Option<LoadCurve>,
     /// The checks the result passed before it was written.
     pub audit: Audit,
     /// Evaluations per effect.

@@ -156,5 +156,6 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
             response,
         }),
         cycle: None,
+        load_curve: None,
     })
 }

@@ -472,7 +472,12 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             }
             let tolerance =
                 tolerance_for(scene, "the normal-contact solver", NormalProblem::TOLERANCE_RANGE)?;
-            ContactNormal::Surface { surface: Box::new(s.clone()), load, tolerance }
+            ContactNormal::Surface {
+                surface: Box::new(s.clone()),
+                load,
+                tolerance,
+                sweep: l.normal_sweep,
+            }
         }
     };
     let method = scene.solver.method;

@@ -281,6 +281,8 @@ pub enum ContactNormal {
         load: SurfaceLoad,
         /// Relative tolerance of the solver.
         tolerance: f64,
+        /// A load sweep up to the force, warm-started step by step.
+        sweep: Option<crate::scene::NormalSweep>,
     },
 }
 

@@ -50,6 +50,7 @@ impl SceneBuilder {
                     friction: 0.0,
                     sliding: false,
                     moment: 0.0,
+                    normal_sweep: None,
                 },
                 motion: Motion::Static,
                 outputs: Outputs { surface: true, field: None, cycle: None, plots: false },

@@ -333,6 +333,26 @@ pub struct Load {
     pub sliding: bool,
     /// Twisting moment about the contact normal (N m, 3D).
     pub moment: f64,
+    /// A load sweep up to `normal` (a surface only): the area–load and approach–load curves.
+    pub normal_sweep: Option<NormalSweep>,
+}
+
+/// A normal-load sweep from `from` to the scene's `load.normal` in `steps` geometric steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NormalSweep {
+    /// The first force (N).
+    pub from: f64,
+    /// Number of steps, the first and the last included.
+    pub steps: usize,
+}
+
+impl NormalSweep {
+    /// The forces of the sweep up to `to`: equal ratios from `from` to `to`.
+    #[must_use]
+    pub fn forces(&self, to: f64) -> Vec<f64> {
+        let n = self.steps.max(2);
+        (0..n).map(|i| self.from * (to / self.from).powf(i as f64 / (n - 1) as f64)).collect()
+    }
 }
 
 /// Motion.

@@ -6,6 +6,7 @@
 //! planner, which know nothing of TOML, can still point at the line and column of the value
 //! they refuse.
 
+use crate::scene::NormalSweep;
 use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -20,7 +21,7 @@ use super::{
     SurfaceBoundary,
 };
 use crate::error::{ErrorKind, SceneError};
-use crate::raw::{Qty, RawScene, SQty};
+use crate::raw::{Qty, RawNormal, RawScene, SQty};
 use crate::units::{parse_quantity, Dim};
 
 mod material;
@@ -409,7 +410,38 @@ fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, Sc
         let d = cx.qty(d, "load.approach", Dim::LENGTH, "approach")?;
         return finish_load(cx, l, NormalLoad::Approach(d), force_dim, force_name);
     }
-    let normal = match (geometry, &l.normal, &l.half_width) {
+    // A load sweep `[from, to, steps]`: the scene's load is the last step.
+    let mut sweep = None;
+    let one: Option<SQty> = match &l.normal {
+        None => None,
+        Some(n) => match n.get_ref() {
+            RawNormal::One(q) => Some(SQty::new(n.span(), q.clone())),
+            RawNormal::Sweep(v) => {
+                let bad = || {
+                    cx.err(ErrorKind::Schema, "load.normal", Some(n.span()), "a load sweep is `[from, to, steps]`")
+                        .hint("e.g. normal = [\"1 N\", \"100 N\", 20]: from and to are forces, steps an integer >= 2 (spaced geometrically)")
+                };
+                let [from, to, steps] = v.as_slice() else { return Err(bad()) };
+                let Qty::Num(count) = steps else { return Err(bad()) };
+                let count = *count;
+                if count.fract() != 0.0 || !(2.0..=1000.0).contains(&count) {
+                    return Err(cx
+                        .err(
+                            ErrorKind::OutOfRange,
+                            "load.normal",
+                            Some(n.span()),
+                            format!("{count} load steps"),
+                        )
+                        .hint("an integer from 2 to 1000"));
+                }
+                let from = SQty::new(n.span(), from.clone());
+                let f0 = cx.qty(&from, "load.normal", force_dim, force_name)?;
+                sweep = Some(NormalSweep { from: f0, steps: count as usize });
+                Some(SQty::new(n.span(), to.clone()))
+            }
+        },
+    };
+    let normal = match (geometry, &one, &l.half_width) {
         (Geometry::Patches(p), None, None) => {
             NormalLoad::FromPatches(p.iter().map(Patch::force).sum())
         }
@@ -438,7 +470,9 @@ fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, Sc
                 "normal = P (N/m in 2D, N in 3D), or half_width = a to prescribe the contact size",
             )),
     };
-    finish_load(cx, l, normal, force_dim, force_name)
+    let mut load = finish_load(cx, l, normal, force_dim, force_name)?;
+    load.normal_sweep = sweep;
+    Ok(load)
 }
 
 fn finish_load(
@@ -465,6 +499,7 @@ fn finish_load(
         friction,
         sliding: l.sliding.unwrap_or(false),
         moment,
+        normal_sweep: None,
     })
 }
 

@@ -280,6 +280,25 @@ fn load(scene: &Scene) -> Result<(), Issue> {
         }
         (_, NormalLoad::Force(p)) => {
             positive("load.normal", p, force_name)?;
+            if let Some(sw) = scene.load.normal_sweep {
+                if !matches!(scene.geometry, Geometry::Surface(_)) {
+                    return Err(Issue::new(
+                        ErrorKind::Unsupported,
+                        "load.normal",
+                        "a load sweep is solved for surfaces (geometry.kind = \"surface\"); closed forms give the area-load curve directly",
+                    )
+                    .hint("give one force, e.g. normal = \"10 N\""));
+                }
+                positive("load.normal", sw.from, force_name)?;
+                if sw.from >= p {
+                    return Err(Issue::new(
+                        ErrorKind::OutOfRange,
+                        "load.normal",
+                        format!("the sweep starts at {} N, not below its end {p} N", sw.from),
+                    )
+                    .hint("write [from, to, steps] with 0 < from < to, e.g. [\"1 N\", \"100 N\", 20]"));
+                }
+            }
         }
         (Geometry::Surface(_), NormalLoad::HalfWidth(_)) => {
             return Err(Issue::new(

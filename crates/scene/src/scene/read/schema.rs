@@ -32,6 +32,8 @@ enum Kind {
     Qty(&'static str),
     /// An array of quantities; an example for the hint.
     QtyArray(&'static str),
+    /// A quantity, or an array of quantities (`load.normal`'s sweep); examples of both.
+    QtyOrArray(&'static str, &'static str),
     /// An array of numbers; an example for the hint.
     NumArray(&'static str),
     /// A table.
@@ -141,7 +143,7 @@ static INDENTER: Table = Table {
 
 static LOAD: Table = Table {
     fields: &[
-        f("normal", Kind::Qty("\"100 N\" (N/m in 2D)")),
+        f("normal", Kind::QtyOrArray("\"100 N\" (N/m in 2D)", "[\"1 N\", \"100 N\", 20]")),
         f("half_width", Kind::Qty("\"5 mm\"")),
         f("approach", Kind::Qty("\"2 um\"")),
         f("tangential", Kind::Qty("\"30 N\" (N/m in 2D)")),
@@ -312,6 +314,11 @@ fn check(v: &Spanned<DeValue<'_>>, kind: Kind, key: &str, out: &mut Vec<Problem>
         out.push(problem(key, span, m, hint));
         return;
     }
+    let kind = match kind {
+        Kind::QtyOrArray(_, sweep) if matches!(val, DeValue::Array(_)) => Kind::QtyArray(sweep),
+        Kind::QtyOrArray(one, _) => Kind::Qty(one),
+        k => k,
+    };
     match kind {
         Kind::Str(choices) => {
             if !matches!(val, DeValue::String(_)) {
@@ -437,6 +444,8 @@ fn check(v: &Spanned<DeValue<'_>>, kind: Kind, key: &str, out: &mut Vec<Problem>
                 format!("{name} = {example}"),
             )),
         },
+        // Resolved to Qty or QtyArray above.
+        Kind::QtyOrArray(..) => {}
         Kind::Table(t) => match val {
             DeValue::Table(tab) => walk(tab, t, key, span, out),
             _ => out.push(wrong(
@@ -576,7 +585,7 @@ fn walk(
                         format!("add {} = \"{}\" (one of: {})", field.name, c[0], c.join(", "))
                     }
                     Kind::Num => format!("add {} = a number", field.name),
-                    Kind::Qty(e) => format!("add {} = {e}", field.name),
+                    Kind::Qty(e) | Kind::QtyOrArray(e, _) => format!("add {} = {e}", field.name),
                     Kind::QtyArray(e) | Kind::NumArray(e) => format!("add {} = {e}", field.name),
                     _ => format!("add `{}`; see docs/SCENES.md", field.name),
                 };
