@@ -3,7 +3,7 @@
 //! - `stickslip run [SCENE] [--out DIR [--force]] [--json]`: run a scene (the built-in
 //!   default scene, seed 000's Table 1 roller, when none is given): plan it (`Plan::new`,
 //!   the plan `explain` prints) and execute that plan (`Plan::execute`); write result.json,
-//!   CSV and SVG plots into DIR, replacing it whole (`write_outputs_with`: an existing DIR
+//!   CSV, SVG plots and report.html into DIR, replacing it whole (`write_outputs_report`: an existing DIR
 //!   that is not a previous result is refused unless `--force`), or print the JSON with
 //!   `--json`.
 //! - `stickslip explain [SCENE]`: print the plan (effects on and off with reasons, the
@@ -47,8 +47,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 mod sweep;
 
 use stickslip_scene::{
-    write_outputs_with, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, WriteOptions,
-    Zones,
+    write_outputs_report, Plan, Progress, ReportContext, RunOptions, Scene, SceneError, SolverOut,
+    WriteOptions, Zones,
 };
 
 mod completions;
@@ -284,8 +284,12 @@ fn cmd_run(
     bar.finish();
     let outcome = result?;
     if let Some(dir) = out {
-        let w =
-            write_outputs_with(&outcome, dir, WriteOptions { plots: scene.outputs.plots, force })?;
+        let w = write_outputs_report(
+            &outcome,
+            dir,
+            WriteOptions { plots: scene.outputs.plots, force },
+            ReportContext { scene: &scene, plan: &plan },
+        )?;
         for n in &w.notes {
             note(&format!("note: {n}"));
         }
