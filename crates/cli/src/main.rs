@@ -330,7 +330,7 @@ fn cmd_run(
         }
         if !json && !quiet {
             note(&format!(
-                "{}: solved in {:.2} s; wrote {} files to {} (open {})",
+                "{}: solved in {:.3} s; wrote {} files to {} (open {})",
                 outcome.title,
                 outcome.solver.seconds,
                 w.files.len(),

@@ -314,7 +314,9 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
     let _ = writeln!(
         s,
         "<h3>As resolved</h3>\n<p>Every quantity in SI units: lengths in m, moduli and stresses \
-         in Pa, forces in N (N/m in 2D), speeds in m/s, times in s, angles in rad.</p>\n<pre>{}</pre>",
+         in Pa, forces in N (N/m in 2D), speeds in m/s, times in s, angles in rad (in degrees \
+         where the name ends in <code>_deg</code>); a field grid with <code>scale: HalfWidth</code> \
+         is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>",
         esc(&format!(
             "geometry: {:#?}\nsubstrate: {:#?}\nindenter: {:#?}\nload: {:#?}\nmotion: {:#?}\noutputs: {:#?}\nsolver: {:#?}",
             resolved.geometry,
