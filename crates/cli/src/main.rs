@@ -3,7 +3,7 @@
 //! - `stickslip run [SCENE] [--out DIR [--force]] [--json]`: run a scene (the built-in
 //!   default scene, seed 000's Table 1 roller, when none is given): plan it (`Plan::new`,
 //!   the plan `explain` prints) and execute that plan (`Plan::execute`); write result.json,
-//!   CSV and SVG plots into DIR, replacing it whole (`write_outputs_with`: an existing DIR
+//!   CSV, SVG plots and report.html into DIR, replacing it whole (`write_outputs_report`: an existing DIR
 //!   that is not a previous result is refused unless `--force`), or print the JSON with
 //!   `--json`.
 //! - `stickslip explain [SCENE]`: print the plan (effects on and off with reasons, the
@@ -47,21 +47,29 @@ use indicatif::{ProgressBar, ProgressStyle};
 mod sweep;
 
 use stickslip_scene::{
-    write_outputs_with, Plan, Progress, RunOptions, Scene, SceneError, SolverOut, WriteOptions,
-    Zones,
+    write_outputs_report, Plan, Progress, ReportContext, RunOptions, Scene, SceneError, SolverOut,
+    WriteOptions, Zones,
 };
 
 mod completions;
 mod new;
 
-/// The exit statuses, shown by `--help` and `run --help`.
-const EXIT_CODES: &str = "\
+/// The exit statuses, shown by `--help` and `run --help` (a macro so that `concat!` can
+/// append them to a subcommand's examples).
+macro_rules! exit_codes {
+    () => {
+        "\
 Exit status:
   0  done: the result was written (and audited); also when stdout was closed early
   1  I/O or internal error (unreadable scene, unwritable --out, full disk, a bug)
   2  refused before solving (syntax, schema, unit, out of range, impossible,
      unsupported) or a command-line usage error
-  3  solved but not trustworthy (the audit failed, or a solver failed); nothing written";
+  3  solved but not trustworthy (the audit failed, or a solver failed); nothing written"
+    };
+}
+
+/// The exit statuses.
+const EXIT_CODES: &str = exit_codes!();
 
 /// Frictional contact mechanics: run scenes, explain their plan, reproduce the published
 /// figures, report accuracy against time.
@@ -75,11 +83,18 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Run a scene (the built-in default scene when none is given).
-    #[command(after_help = EXIT_CODES)]
+    #[command(after_help = concat!(
+        "Examples:\n",
+        "  stickslip run scenes/hertz_cylinder_cattaneo.toml --out results/hertz\n",
+        "      (result.json, CSV, SVG plots and report.html in results/hertz)\n",
+        "  stickslip run scenes/sphere_load_cycle.toml --json | head\n\n",
+        exit_codes!()
+    ))]
     Run {
         /// Scene file (TOML); omit for the seed 000 Table 1 roller.
         scene: Option<PathBuf>,
-        /// Write result.json, CSV and SVG plots into this directory, all or nothing: the
+        /// Write result.json, CSV, SVG plots and report.html into this directory, all or
+        /// nothing: the
         /// directory is replaced whole (no stale file of an earlier run stays). An existing
         /// directory that is not a previous stickslip result is refused (see --force).
         #[arg(long, value_name = "DIR")]
@@ -95,8 +110,12 @@ enum Command {
         /// estimated memory exceeds the memory available now are refused too.
         #[arg(long, value_name = "SECONDS", default_value_t = stickslip_scene::DEFAULT_TIME_LIMIT_SECONDS, value_parser = positive_seconds)]
         time_limit: f64,
+        /// No progress bar and no closing summary on stderr (errors are still printed).
+        #[arg(long, short)]
+        quiet: bool,
     },
     /// Print the plan of a scene without computing anything.
+    #[command(after_help = "Example:\n  stickslip explain scenes/wheel_rail_creepage_spin.toml")]
     Explain {
         /// Scene file (TOML); omit for the built-in default scene.
         scene: Option<PathBuf>,
@@ -104,16 +123,22 @@ enum Command {
     /// Run a parameter sweep: the cartesian product of the --vary values, each point an
     /// independent, audited run, gathered into one table (CSV and Parquet). A failed point
     /// is a row with its reason; the status is 0 once the table is written.
+    #[command(
+        after_help = "Example:\n  stickslip sweep scenes/hertz_cylinder_cattaneo.toml --vary load.friction=0.2,0.3,0.4 \\\n      --vary load.tangential=\"0 kN/m:20 kN/m:5\" --out results/sweep"
+    )]
     Sweep(sweep::SweepArgs),
     /// Merge the tables of a sweep's shards, checking that every point is there once.
+    #[command(after_help = "Example:\n  stickslip merge --out results/sweep results/shards")]
     Merge(sweep::MergeArgs),
     /// Regenerate the verification pages (published values against computed ones).
+    #[command(after_help = "Example:\n  stickslip reproduce --out /tmp/verification")]
     Reproduce {
         /// Output directory.
         #[arg(long, value_name = "DIR", default_value = "docs/verification")]
         out: PathBuf,
     },
     /// The accuracy-versus-time report.
+    #[command(after_help = "Example:\n  stickslip accuracy --quick --out /tmp/accuracy")]
     Accuracy {
         /// The CI subset (well under a minute).
         #[arg(long, conflicts_with = "full")]
@@ -126,12 +151,20 @@ enum Command {
         out: PathBuf,
     },
     /// Write a commented scene to start from (see --list for the kinds).
+    #[command(
+        after_help = "Examples:\n  stickslip new --list\n  stickslip new sphere my_sphere.toml"
+    )]
     New(new::NewArgs),
     /// Print the JSON Schema of the scene format (for editors; see `#:schema`).
+    #[command(after_help = "Example:\n  stickslip schema > scene.schema.json")]
     Schema,
     /// Print a shell completion script: stickslip completions bash > ~/.local/share/bash-completion/completions/stickslip
+    #[command(
+        after_help = "Example:\n  stickslip completions bash > ~/.local/share/bash-completion/completions/stickslip"
+    )]
     Completions(completions::CompletionsArgs),
     /// Print the manual page (roff): stickslip man > stickslip.1
+    #[command(after_help = "Example:\n  stickslip man > stickslip.1 && man ./stickslip.1")]
     Man,
 }
 
@@ -189,12 +222,13 @@ struct Bar {
 }
 
 impl Bar {
-    fn new() -> Self {
+    /// A bar that may be drawn (`allowed`: not `--quiet`) when stderr is a terminal.
+    fn new(allowed: bool) -> Self {
         Bar {
             start: Instant::now(),
             bar: Mutex::new(None),
             last: Mutex::new(None),
-            enabled: std::io::stderr().is_terminal(),
+            enabled: allowed && std::io::stderr().is_terminal(),
         }
     }
 
@@ -266,12 +300,13 @@ fn cmd_run(
     force: bool,
     json: bool,
     time_limit: f64,
+    quiet: bool,
 ) -> Result<(), Failure> {
     let scene = load(scene)?;
     // The plan `explain` prints; execution follows it and decides nothing again.
     let plan = Plan::new(&scene)?;
     plan.check_machine(&stickslip_scene::MachineLimits::detect(time_limit))?;
-    let bar = Bar::new();
+    let bar = Bar::new(!quiet);
     let cb = |p: Progress| bar.update(p);
     let opts = RunOptions { progress: Some(&cb) };
     let done = AtomicBool::new(false);
@@ -284,13 +319,24 @@ fn cmd_run(
     bar.finish();
     let outcome = result?;
     if let Some(dir) = out {
-        let w =
-            write_outputs_with(&outcome, dir, WriteOptions { plots: scene.outputs.plots, force })?;
+        let w = write_outputs_report(
+            &outcome,
+            dir,
+            WriteOptions { plots: scene.outputs.plots, force },
+            ReportContext { scene: &scene, plan: &plan },
+        )?;
         for n in &w.notes {
             note(&format!("note: {n}"));
         }
-        if !json {
-            note(&format!("wrote {} files to {}", w.files.len(), w.dir.display()));
+        if !json && !quiet {
+            note(&format!(
+                "{}: solved in {:.3} s; wrote {} files to {} (open {})",
+                outcome.title,
+                outcome.solver.seconds,
+                w.files.len(),
+                w.dir.display(),
+                w.dir.join("report.html").display()
+            ));
         }
     }
     if json {
@@ -426,8 +472,8 @@ fn cmd_accuracy(quick: bool, out: &std::path::Path) -> Result<(), Failure> {
 
 fn dispatch(cli: &Cli) -> Result<(), Failure> {
     match &cli.command {
-        Command::Run { scene, out, force, json, time_limit } => {
-            cmd_run(scene.as_ref(), out.as_ref(), *force, *json, *time_limit)
+        Command::Run { scene, out, force, json, time_limit, quiet } => {
+            cmd_run(scene.as_ref(), out.as_ref(), *force, *json, *time_limit, *quiet)
         }
         Command::Explain { scene } => cmd_explain(scene.as_ref()),
         Command::Sweep(a) => sweep::cmd_sweep(a),

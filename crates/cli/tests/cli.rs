@@ -161,3 +161,44 @@ fn grid_runs_print_element_counts_and_the_solver_and_explain_names_the_grid_solv
         assert!(g.contains(choice), "{g}");
     }
 }
+
+#[test]
+fn a_run_ends_with_a_one_line_summary_unless_quiet() {
+    let d = tmp("summary");
+    let out = d.join("out");
+    let o = bin().args(["run", "--out"]).arg(&out).output().unwrap();
+    let (_, se) = text(&o);
+    assert!(o.status.success(), "{se}");
+    // stderr is not a terminal here: no progress bar, only the summary line.
+    let lines: Vec<&str> = se.lines().collect();
+    assert_eq!(lines.len(), 1, "{se}");
+    let report = out.join("report.html").display().to_string();
+    assert!(lines[0].contains("solved in") && lines[0].contains(&report), "{se}");
+    assert!(out.join("report.html").exists());
+    let o = bin().args(["run", "--quiet", "--out"]).arg(&out).output().unwrap();
+    let (_, se) = text(&o);
+    assert!(o.status.success() && se.is_empty(), "{se}");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn every_subcommand_help_has_an_example() {
+    for sub in [
+        "run",
+        "explain",
+        "sweep",
+        "merge",
+        "reproduce",
+        "accuracy",
+        "new",
+        "schema",
+        "completions",
+        "man",
+    ] {
+        let o = bin().args([sub, "--help"]).output().unwrap();
+        let (so, _) = text(&o);
+        assert!(o.status.success(), "{sub}");
+        let at = so.find("Example").unwrap_or_else(|| panic!("{sub} --help has no example:\n{so}"));
+        assert!(so[at..].contains(&format!("stickslip {sub}")), "{sub}: {so}");
+    }
+}

@@ -17,7 +17,8 @@
 //! - [`exec`]: [`Plan::execute`] runs the recipe stage by stage (normal contact → friction
 //!   → twist → rolling → load cycle → subsurface field) into an [`Outcome`] (result.json),
 //!   deciding nothing again ([`Evaluations`] counts what ran); [`run()`] is plan + execute;
-//! - [`write_outputs`]: result.json, CSV and SVG plots, written all-or-nothing;
+//! - [`write_outputs`]: result.json, CSV, SVG plots and report.html, written all-or-nothing
+//!   ([`write_outputs_report`] puts the scene and its plan into the report);
 //! - [`json_schema`]: the JSON Schema of the format, for editors; [`templates`]: the
 //!   commented starting scenes of `stickslip new`;
 //! - [`sweep`]: parameter sweeps (the cartesian product of varied keys, shards, the CSV
@@ -64,6 +65,7 @@ mod overview;
 pub mod plan;
 mod plots;
 mod raw;
+mod report;
 mod scene;
 pub mod sweep;
 pub mod templates;
@@ -75,12 +77,13 @@ pub use exec::outcome::{
     FieldOut, FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions,
     SolverOut, SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
 };
-pub use output::{write_outputs, write_outputs_with, WriteOptions, Written};
+pub use output::{write_outputs, write_outputs_report, write_outputs_with, WriteOptions, Written};
 pub use overview::scenes_page;
 pub use plan::recipe::Recipe;
 pub use plan::{
     Cost, Effect, EffectPlan, MachineLimits, Plan, Technique, DEFAULT_TIME_LIMIT_SECONDS,
 };
+pub use report::ReportContext;
 
 /// Plan `scene` and execute the plan: [`Plan::new`] then [`Plan::execute`].
 ///

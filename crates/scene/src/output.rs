@@ -1,4 +1,5 @@
-//! Writing a run's results: result.json, CSV of the arrays, SVG plots. All or nothing.
+//! Writing a run's results: result.json, CSV of the arrays, SVG plots, report.html. All or
+//! nothing.
 //!
 //! The target directory `DIR` is replaced whole, never merged into:
 //!
@@ -33,6 +34,7 @@ use std::time::{Duration, Instant};
 
 use crate::error::{ErrorKind, SceneError};
 use crate::exec::outcome::{Outcome, SurfaceOut};
+use crate::report::ReportContext;
 
 /// What [`write_outputs`] wrote.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -83,7 +85,11 @@ fn refuse(dir: &Path, what: impl std::fmt::Display, hint: impl Into<String>) -> 
 ///
 /// # Errors
 /// A [`SceneError`] (kind [`ErrorKind::Io`]) if a plot cannot be drawn.
-pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)>, SceneError> {
+pub(crate) fn render(
+    out: &Outcome,
+    plots: bool,
+    ctx: Option<ReportContext<'_>>,
+) -> Result<Vec<(String, Vec<u8>)>, SceneError> {
     let mut files: Vec<(String, String)> = vec![("result.json".to_string(), out.to_json() + "\n")];
     let mut binary: Vec<(String, Vec<u8>)> = Vec::new();
     let mut s = String::new();
@@ -216,13 +222,16 @@ pub(crate) fn render(out: &Outcome, plots: bool) -> Result<Vec<(String, Vec<u8>)
         }
         files.push(("load_curve.csv".to_string(), std::mem::take(&mut s)));
     }
-    if plots {
-        let svgs = crate::plots::render(out).map_err(|e| {
+    let svgs = if plots {
+        crate::plots::render(out).map_err(|e| {
             SceneError::new(ErrorKind::Io, format!("cannot draw the plots: {e}"))
                 .hint("run without outputs.plots; nothing was written or changed")
-        })?;
-        files.extend(svgs);
-    }
+        })?
+    } else {
+        Vec::new()
+    };
+    files.push(("report.html".to_string(), crate::report::render(out, ctx, &svgs, plots)));
+    files.extend(svgs);
     let mut all: Vec<(String, Vec<u8>)> =
         files.into_iter().map(|(n, t)| (n, t.into_bytes())).collect();
     all.extend(binary);
@@ -253,7 +262,8 @@ pub(crate) fn npy(data: &[f64], shape: &[usize]) -> Vec<u8> {
     out
 }
 
-/// Write result.json, the CSV files and (when `plots`) the SVG plots of `out` into `dir`,
+/// Write result.json, the CSV files, report.html and (when `plots`) the SVG plots of `out`
+/// into `dir`,
 /// all or nothing, replacing `dir` whole (see the module documentation). An existing `dir`
 /// that holds anything but a previous stickslip result is refused; see
 /// [`write_outputs_with`] to force.
@@ -275,7 +285,22 @@ pub fn write_outputs_with(
     dir: &Path,
     opts: WriteOptions,
 ) -> Result<Written, SceneError> {
-    let files = render(out, opts.plots)?;
+    let files = render(out, opts.plots, None)?;
+    write_files(&files, dir, opts.force)
+}
+
+/// [`write_outputs_with`], with the scene and its plan in report.html (the scene's text as
+/// given, the scene as resolved, the plan's effects, methods and estimate).
+///
+/// # Errors
+/// As [`write_outputs`].
+pub fn write_outputs_report(
+    out: &Outcome,
+    dir: &Path,
+    opts: WriteOptions,
+    ctx: ReportContext<'_>,
+) -> Result<Written, SceneError> {
+    let files = render(out, opts.plots, Some(ctx))?;
     write_files(&files, dir, opts.force)
 }
 
@@ -504,8 +529,15 @@ fn foreign_files(dir: &Path) -> Result<Vec<String>, std::io::Error> {
         return Ok(Vec::new());
     }
     let ours = |n: &str| {
-        matches!(n, "result.json" | "surface.csv" | "field.csv" | "cycle.csv" | "load_curve.csv")
-            || ((n.ends_with(".svg") || n.ends_with(".npy")) && !n.starts_with('.'))
+        matches!(
+            n,
+            "result.json"
+                | "surface.csv"
+                | "field.csv"
+                | "cycle.csv"
+                | "load_curve.csv"
+                | "report.html"
+        ) || ((n.ends_with(".svg") || n.ends_with(".npy")) && !n.starts_with('.'))
     };
     let json_ok = std::fs::read_to_string(dir.join("result.json"))
         .ok()

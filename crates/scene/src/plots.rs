@@ -4,6 +4,7 @@
 use plotters::prelude::*;
 
 use crate::exec::outcome::{Outcome, SurfaceOut};
+use crate::report::eng;
 
 type PlotResult = Result<String, String>;
 
@@ -36,30 +37,86 @@ fn err(e: impl std::fmt::Display) -> String {
     e.to_string()
 }
 
+/// An axis or colour scale in engineering units: values are divided by `div` and labelled
+/// with `unit` (an SI prefix on the base unit, e.g. µm, MPa).
+#[derive(Debug, Clone)]
+struct Units {
+    div: f64,
+    unit: String,
+}
+
+impl Units {
+    /// The prefix that puts the largest magnitude `maxabs` in [1, 1000) (no prefix for an
+    /// empty base unit, i.e. a ratio).
+    fn for_max(maxabs: f64, base: &str) -> Units {
+        if base.is_empty() || !(maxabs.is_finite() && maxabs > 0.0) {
+            return Units { div: 1.0, unit: base.to_string() };
+        }
+        let e3 = ((maxabs.log10() / 3.0).floor() as i32).clamp(-4, 3);
+        let prefix = ["p", "n", "µ", "m", "", "k", "M", "G"][(e3 + 4) as usize];
+        Units { div: 10f64.powi(3 * e3), unit: format!("{prefix}{base}") }
+    }
+
+    fn of(v: impl Iterator<Item = f64>, base: &str) -> Units {
+        Units::for_max(v.filter(|x| x.is_finite()).fold(0.0f64, |m, x| m.max(x.abs())), base)
+    }
+
+    /// An axis description: "name (unit)", or the name alone for a ratio.
+    fn desc(&self, name: &str) -> String {
+        if self.unit.is_empty() {
+            name.to_string()
+        } else {
+            format!("{name} ({})", self.unit)
+        }
+    }
+
+    fn scale(&self, v: &[f64]) -> Vec<f64> {
+        v.iter().map(|x| x / self.div).collect()
+    }
+}
+
+/// A round tick label: as many decimals as the tick spacing of an axis spanning `span` needs
+/// (plotters puts about ten ticks on an axis), no exponent.
+fn tick(v: f64, span: f64) -> String {
+    let step = (span.abs() / 10.0).max(1e-300);
+    let decimals = (-step.log10().floor()).clamp(0.0, 9.0) as usize;
+    let s = format!("{v:.decimals$}");
+    // "-0" and "-0.00" from rounding are zero.
+    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
 fn line_chart(
     title: &str,
-    xlabel: &str,
-    ylabel: &str,
+    (xname, xbase): (&str, &str),
+    (yname, ybase): (&str, &str),
     curves: &[Curve<'_>],
     bands: &[(f64, f64, RGBColor)],
 ) -> PlotResult {
+    let xu = Units::of(curves.iter().flat_map(|c| c.x.iter().copied()), xbase);
+    let yu = Units::of(curves.iter().flat_map(|c| c.y.iter().copied()), ybase);
+    let scaled: Vec<(Vec<f64>, Vec<f64>)> =
+        curves.iter().map(|c| (xu.scale(c.x), yu.scale(c.y))).collect();
     let mut s = String::new();
     {
         let root = SVGBackend::with_string(&mut s, (720, 440)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let (x0, x1) = range(curves.iter().flat_map(|c| c.x.iter().copied()));
-        let (y0, y1) = range(curves.iter().flat_map(|c| c.y.iter().copied()));
+        let (x0, x1) = range(scaled.iter().flat_map(|c| c.0.iter().copied()));
+        let (y0, y1) = range(scaled.iter().flat_map(|c| c.1.iter().copied()));
         let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 18))
+            .caption(title, ("sans-serif", 17))
             .margin(12)
             .x_label_area_size(40)
-            .y_label_area_size(80)
+            .y_label_area_size(70)
             .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(err)?;
         chart
             .configure_mesh()
-            .x_desc(xlabel)
-            .y_desc(ylabel)
+            .x_desc(xu.desc(xname))
+            .y_desc(yu.desc(yname))
             .x_label_formatter(&|v| tick(*v, x1 - x0))
             .y_label_formatter(&|v| tick(*v, y1 - y0))
             .draw()
@@ -67,16 +124,16 @@ fn line_chart(
         for &(a, b, col) in bands {
             chart
                 .draw_series(std::iter::once(Rectangle::new(
-                    [(a, y0), (b, y1)],
+                    [(a / xu.div, y0), (b / xu.div, y1)],
                     col.mix(0.15).filled(),
                 )))
                 .map_err(err)?;
         }
-        for c in curves {
+        for (c, (x, y)) in curves.iter().zip(&scaled) {
             let col = c.colour;
             chart
                 .draw_series(LineSeries::new(
-                    c.x.iter().copied().zip(c.y.iter().copied()),
+                    x.iter().copied().zip(y.iter().copied()),
                     col.stroke_width(2),
                 ))
                 .map_err(err)?
@@ -105,6 +162,126 @@ fn diverging(v: f64, vmax: f64) -> RGBColor {
     } else {
         RGBColor(w(t), w(t), 255)
     }
+}
+
+/// The colour scale of a map: viridis from 0 to the largest value for a quantity that is
+/// never negative, or the diverging scale centred on zero for a signed one.
+#[derive(Debug, Clone, Copy)]
+enum Scale {
+    Viridis { max: f64 },
+    Diverging { max: f64 },
+}
+
+impl Scale {
+    fn of(v: &[Vec<f64>]) -> Scale {
+        let vals = v.iter().flatten().copied().filter(|x| x.is_finite());
+        let (lo, hi) = vals.fold((0.0f64, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        // A negative value below 1e-9 of the largest is rounding, not a sign.
+        if lo >= -1e-9 * hi.abs() {
+            Scale::Viridis { max: hi }
+        } else {
+            Scale::Diverging { max: hi.max(-lo) }
+        }
+    }
+
+    fn bounds(self) -> (f64, f64) {
+        match self {
+            Scale::Viridis { max } => (0.0, max),
+            Scale::Diverging { max } => (-max, max),
+        }
+    }
+
+    fn colour(self, v: f64) -> RGBColor {
+        use plotters::style::colors::colormaps::{ColorMap, ViridisRGB};
+        match self {
+            Scale::Viridis { max } => {
+                let t = if max > 0.0 { (v / max).clamp(0.0, 1.0) } else { 0.0 };
+                ViridisRGB.get_color_normalized(t, 0.0, 1.0)
+            }
+            Scale::Diverging { max } => diverging(v, max),
+        }
+    }
+}
+
+/// The colour bar of `scale` in `area`, labelled with the value's name and unit.
+fn colour_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    scale: Scale,
+    units: &Units,
+    name: &str,
+) -> Result<(), String> {
+    let (lo, hi) = scale.bounds();
+    let (a, b) = (lo / units.div, hi / units.div);
+    let (a, b) = if b > a { (a, b) } else { (a - 1.0, a + 1.0) };
+    let mut bar = ChartBuilder::on(area)
+        .margin_top(12)
+        .margin_bottom(45)
+        .margin_right(8)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..1.0, a..b)
+        .map_err(|e| e.to_string())?;
+    bar.configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_label_style(("sans-serif", 12))
+        .axis_desc_style(("sans-serif", 13))
+        .y_desc(units.desc(name))
+        .y_label_formatter(&|v| tick(*v, b - a))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    let n = 64;
+    bar.draw_series((0..n).map(|k| {
+        let (v0, v1) = (a + (b - a) * k as f64 / n as f64, a + (b - a) * (k + 1) as f64 / n as f64);
+        let c = scale.colour(0.5 * (v0 + v1) * units.div);
+        Rectangle::new([(0.0, v0), (1.0, v1)], c.filled())
+    }))
+    .map_err(|e| e.to_string())?;
+    Ok(())
+}
+
+/// Plot area (pixels) with equal scales on both axes for spans `w` x `h`, at most 500 x 420.
+fn equal_axes(w: f64, h: f64) -> (u32, u32) {
+    let (mw, mh) = (500.0, 420.0);
+    let k = (mw / w).min(mh / h);
+    ((w * k).round().max(60.0) as u32, (h * k).round().max(60.0) as u32)
+}
+
+/// Edges between a stick cell (`stick[i][j] == 1`) and any other cell or the grid's edge, as
+/// segments in metres: the outline of the stick zone.
+fn stick_outline(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> Vec<[(f64, f64); 2]> {
+    let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
+    let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
+    let is = |i: isize, j: isize| -> bool {
+        i >= 0
+            && j >= 0
+            && (i as usize) < x.len()
+            && (j as usize) < y.len()
+            && stick[i as usize][j as usize] == 1
+    };
+    let mut segs = Vec::new();
+    for i in 0..x.len() {
+        for j in 0..y.len() {
+            if stick[i][j] != 1 {
+                continue;
+            }
+            let (ii, jj) = (i as isize, j as isize);
+            let (xl, xr) = (x[i] - 0.5 * hx, x[i] + 0.5 * hx);
+            let (yl, yr) = (y[j] - 0.5 * hy, y[j] + 0.5 * hy);
+            if !is(ii - 1, jj) {
+                segs.push([(xl, yl), (xl, yr)]);
+            }
+            if !is(ii + 1, jj) {
+                segs.push([(xr, yl), (xr, yr)]);
+            }
+            if !is(ii, jj - 1) {
+                segs.push([(xl, yl), (xr, yl)]);
+            }
+            if !is(ii, jj + 1) {
+                segs.push([(xl, yr), (xr, yr)]);
+            }
+        }
+    }
+    segs
 }
 
 /// Most cells drawn along a side of a map: beyond it, square blocks of cells are merged so
@@ -137,72 +314,91 @@ fn coarse_rows(v: &[Vec<f64>], by: usize, bx: usize) -> Vec<Vec<f64>> {
         .collect()
 }
 
-fn heat_map(
-    title: &str,
-    x: &[f64],
-    y: &[f64],
-    v: &[Vec<f64>],
+/// A map of `v[j][i]` (rows along y, columns along x) of the quantity `name` in `base` units.
+struct Map<'a> {
+    title: String,
+    name: &'a str,
+    base: &'a str,
+    x: &'a [f64],
+    y: &'a [f64],
+    v: &'a [Vec<f64>],
+    /// Depth downwards (the y axis reversed).
     yflip: bool,
-    ylabel: &str,
-) -> PlotResult {
-    let (bx, by) = (block(x.len()), block(y.len()));
+    yname: &'a str,
+    /// Segments (m) drawn over the map: the stick zone's outline.
+    outline: &'a [[(f64, f64); 2]],
+}
+
+fn heat_map(m: &Map<'_>) -> PlotResult {
+    let (bx, by) = (block(m.x.len()), block(m.y.len()));
     if bx > 1 || by > 1 {
-        let title = format!("{title}, {bx} x {by} cell blocks");
-        return heat_map(
-            &title,
-            &coarse_axis(x, bx),
-            &coarse_axis(y, by),
-            &coarse_rows(v, by, bx),
-            yflip,
-            ylabel,
-        );
+        let (x, y, v) = (coarse_axis(m.x, bx), coarse_axis(m.y, by), coarse_rows(m.v, by, bx));
+        let title = format!("{}, {bx} x {by} cell blocks", m.title);
+        return heat_map(&Map { title, x: &x, y: &y, v: &v, ..*m });
     }
+    let (x, y, v) = (m.x, m.y, m.v);
+    let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
+    let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
+    let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
+    let (ya, yb) = (y[0] - 0.5 * hy, y[y.len() - 1] + 0.5 * hy);
+    let lu = Units::for_max(xa.abs().max(xb.abs()).max(ya.abs()).max(yb.abs()), "m");
+    let scale = Scale::of(v);
+    let vu = Units::for_max(scale.bounds().1, m.base);
+    let (pw, ph) = equal_axes(xb - xa, yb - ya);
+    // plot area + y labels (75) + margins; the colour bar takes 110 on the right.
+    // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
+    let (w, h) = ((pw + 75 + 24 + 110).max(720), ph + 40 + 45 + 24);
     let mut s = String::new();
     {
-        let root = SVGBackend::with_string(&mut s, (720, 480)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
-        let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
-        let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
-        let (ya, yb) = (y[0] - 0.5 * hy, y[y.len() - 1] + 0.5 * hy);
-        let vmax = v.iter().flatten().fold(0.0f64, |m, z| m.max(z.abs()));
-        let caption = format!("{title} (colour: -{vmax:.3e} blue .. +{vmax:.3e} red)");
-        let mut chart = ChartBuilder::on(&root)
-            .caption(caption, ("sans-serif", 16))
+        let root = root.titled(&m.title, ("sans-serif", 15)).map_err(err)?;
+        let (left, rest) = root.split_horizontally(pw + 75 + 24);
+        let (right, _) = rest.split_horizontally(110);
+        let (sxa, sxb, sya, syb) = (xa / lu.div, xb / lu.div, ya / lu.div, yb / lu.div);
+        let mut chart = ChartBuilder::on(&left)
             .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(80)
-            .build_cartesian_2d(xa..xb, if yflip { yb..ya } else { ya..yb })
+            .x_label_area_size(45)
+            .y_label_area_size(75)
+            .build_cartesian_2d(sxa..sxb, if m.yflip { syb..sya } else { sya..syb })
             .map_err(err)?;
         chart
             .configure_mesh()
             .disable_mesh()
-            .x_desc("x (m)")
-            .y_desc(ylabel)
-            .x_label_formatter(&|v| tick(*v, xb - xa))
-            .y_label_formatter(&|v| tick(*v, yb - ya))
+            .x_desc(lu.desc("x"))
+            .y_desc(lu.desc(m.yname))
+            .x_label_formatter(&|v| tick(*v, sxb - sxa))
+            .y_label_formatter(&|v| tick(*v, syb - sya))
             .draw()
             .map_err(err)?;
-        // v is indexed [row j along y][column i along x] for fields.
         let cells = y
             .iter()
             .enumerate()
             .flat_map(|(j, &yy)| x.iter().enumerate().map(move |(i, &xx)| (i, j, xx, yy)));
+        let d = lu.div;
         chart
             .draw_series(cells.map(|(i, j, xx, yy)| {
-                let c = diverging(v[j][i], vmax);
                 Rectangle::new(
-                    [(xx - 0.5 * hx, yy - 0.5 * hy), (xx + 0.5 * hx, yy + 0.5 * hy)],
-                    c.filled(),
+                    [
+                        ((xx - 0.5 * hx) / d, (yy - 0.5 * hy) / d),
+                        ((xx + 0.5 * hx) / d, (yy + 0.5 * hy) / d),
+                    ],
+                    scale.colour(v[j][i]).filled(),
                 )
             }))
             .map_err(err)?;
+        chart
+            .draw_series(m.outline.iter().map(|&[(x0, y0), (x1, y1)]| {
+                PathElement::new(vec![(x0 / d, y0 / d), (x1 / d, y1 / d)], WHITE.stroke_width(2))
+            }))
+            .map_err(err)?;
+        colour_bar(&right, scale, &vu, m.name)?;
         root.present().map_err(err)?;
     }
     Ok(s)
 }
 
-fn stick_map(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
+fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
     let (bx, by) = (block(x.len()), block(y.len()));
     if bx > 1 || by > 1 {
         // A block sticks if most of its contact elements stick; outside if it has none.
@@ -231,30 +427,39 @@ fn stick_map(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
                     .collect()
             })
             .collect();
-        return stick_map(&coarse_axis(x, bx), &coarse_axis(y, by), &merged);
+        return stick_map(title, &coarse_axis(x, bx), &coarse_axis(y, by), &merged);
     }
+    let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
+    let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
+    let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
+    let (ya, yb) = (y[0] - 0.5 * hy, y[y.len() - 1] + 0.5 * hy);
+    let lu = Units::for_max(xa.abs().max(xb.abs()).max(ya.abs()).max(yb.abs()), "m");
+    let d = lu.div;
+    let (pw, ph) = equal_axes(xb - xa, yb - ya);
     let mut s = String::new();
     {
-        let root = SVGBackend::with_string(&mut s, (600, 600)).into_drawing_area();
+        // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
+        let root = SVGBackend::with_string(&mut s, ((pw + 75 + 24).max(720), ph + 40 + 45 + 24))
+            .into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
-        let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
-        let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
-        let (ya, yb) = (y[0] - 0.5 * hy, y[y.len() - 1] + 0.5 * hy);
+        let root = root
+            .titled(&format!("{title}: stick (blue), slip (red)"), ("sans-serif", 15))
+            .map_err(err)?;
+        let (root, _) = root.split_horizontally(pw + 75 + 24);
+        let (sxa, sxb, sya, syb) = (xa / d, xb / d, ya / d, yb / d);
         let mut chart = ChartBuilder::on(&root)
-            .caption("stick (blue) and slip (red) elements", ("sans-serif", 16))
             .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(80)
-            .build_cartesian_2d(xa..xb, ya..yb)
+            .x_label_area_size(45)
+            .y_label_area_size(75)
+            .build_cartesian_2d(sxa..sxb, sya..syb)
             .map_err(err)?;
         chart
             .configure_mesh()
             .disable_mesh()
-            .x_desc("x (m)")
-            .y_desc("y (m)")
-            .x_label_formatter(&|v| tick(*v, xb - xa))
-            .y_label_formatter(&|v| tick(*v, yb - ya))
+            .x_desc(lu.desc("x"))
+            .y_desc(lu.desc("y"))
+            .x_label_formatter(&|v| tick(*v, sxb - sxa))
+            .y_label_formatter(&|v| tick(*v, syb - sya))
             .draw()
             .map_err(err)?;
         let cells = x.iter().enumerate().flat_map(|(i, &xx)| {
@@ -269,7 +474,10 @@ fn stick_map(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
             .draw_series(cells.map(|(xx, yy, st)| {
                 let c = if st == 1 { RGBColor(70, 110, 220) } else { RGBColor(220, 80, 60) };
                 Rectangle::new(
-                    [(xx - half * hx, yy - half * hy), (xx + half * hx, yy + half * hy)],
+                    [
+                        ((xx - half * hx) / d, (yy - half * hy) / d),
+                        ((xx + half * hx) / d, (yy + half * hy) / d),
+                    ],
                     c.filled(),
                 )
             }))
@@ -279,19 +487,21 @@ fn stick_map(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
     Ok(s)
 }
 
-/// Every plot of `out` as (file name, SVG text).
+/// Every plot of `out` as (file name, SVG text). Titles start with the scene's title.
 pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
     let mut files = Vec::new();
     let blue = RGBColor(40, 90, 200);
     let red = RGBColor(200, 60, 40);
+    let st = &out.title;
+    let x_m = ("x", "m");
     match &out.surface {
         SurfaceOut::Line { x, p, q, ux, uy, .. } if !x.is_empty() => {
             files.push((
                 "pressure.svg".to_string(),
                 line_chart(
-                    "contact pressure",
-                    "x (m)",
-                    "p (Pa)",
+                    &format!("{st}: contact pressure"),
+                    x_m,
+                    ("p", "Pa"),
                     &[Curve { label: "p", x, y: p, colour: blue }],
                     &[],
                 )?,
@@ -302,9 +512,9 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
             files.push((
                 "traction.svg".to_string(),
                 line_chart(
-                    "shear traction q (bands: stick blue, slip red)",
-                    "x (m)",
-                    "q (Pa)",
+                    &format!("{st}: shear traction q (bands: stick blue, slip red)"),
+                    x_m,
+                    ("p, q", "Pa"),
                     &[
                         Curve { label: "q", x, y: q, colour: red },
                         Curve { label: "p", x, y: p, colour: blue },
@@ -315,9 +525,9 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
             files.push((
                 "stick_slip.svg".to_string(),
                 line_chart(
-                    "stick (blue) and slip (red) zones with the traction ratio |q|/p",
-                    "x (m)",
-                    "|q| / p",
+                    &format!("{st}: stick (blue) and slip (red) zones, |q|/p"),
+                    x_m,
+                    ("|q| / p", ""),
                     &[Curve {
                         label: "|q|/p",
                         x,
@@ -335,9 +545,9 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 files.push((
                     "displacement.svg".to_string(),
                     line_chart(
-                        "surface displacement of the substrate",
-                        "x (m)",
-                        "u (m)",
+                        &format!("{st}: surface displacement of the substrate"),
+                        x_m,
+                        ("u", "m"),
                         &[
                             Curve { label: "ux", x, y: ux, colour: red },
                             Curve { label: "uy", x, y: uy, colour: blue },
@@ -352,18 +562,36 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
             let tr = |m: &Vec<Vec<f64>>| -> Vec<Vec<f64>> {
                 (0..y.len()).map(|j| (0..x.len()).map(|i| m[i][j]).collect()).collect()
             };
+            let outline = stick_outline(x, y, stick);
+            let map = |title: String, name, v| Map {
+                title,
+                name,
+                base: "Pa",
+                x,
+                y,
+                v,
+                yflip: false,
+                yname: "y",
+                outline: &outline,
+            };
+            let pt = tr(p);
             files.push((
                 "pressure.svg".to_string(),
-                heat_map("pressure p (Pa)", x, y, &tr(p), false, "y (m)")?,
+                heat_map(&map(format!("{st}: pressure p (white: stick zone outline)"), "p", &pt))?,
             ));
             let qmag: Vec<Vec<f64>> = (0..x.len())
                 .map(|i| (0..y.len()).map(|j| qx[i][j].hypot(qy[i][j])).collect())
                 .collect();
+            let qt = tr(&qmag);
             files.push((
                 "traction.svg".to_string(),
-                heat_map("traction magnitude |q| (Pa)", x, y, &tr(&qmag), false, "y (m)")?,
+                heat_map(&map(
+                    format!("{st}: traction |q| (white: stick zone outline)"),
+                    "|q|",
+                    &qt,
+                ))?,
             ));
-            files.push(("stick_slip.svg".to_string(), stick_map(x, y, stick)?));
+            files.push(("stick_slip.svg".to_string(), stick_map(st, x, y, stick)?));
         }
         _ => {}
     }
@@ -372,7 +600,17 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
         for (name, v) in [("sxx", &f.sxx), ("syy", &f.syy), ("sxy", &f.sxy)] {
             files.push((
                 format!("field_{name}.svg"),
-                heat_map(&format!("subsurface {name} (Pa)"), &f.x, &f.y, v, true, "depth y (m)")?,
+                heat_map(&Map {
+                    title: format!("{st}: subsurface {name}"),
+                    name,
+                    base: "Pa",
+                    x: &f.x,
+                    y: &f.y,
+                    v,
+                    yflip: true,
+                    yname: "depth y",
+                    outline: &[],
+                })?,
             ));
         }
     }
@@ -392,14 +630,17 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                     .collect();
                 files.push((
                     format!("field_{name}_xz.svg"),
-                    heat_map(
-                        &format!("{name} (Pa), section y = {:.3e} m", v.y[j0]),
-                        &v.x,
-                        &v.z,
-                        &rows,
-                        true,
-                        "depth z (m)",
-                    )?,
+                    heat_map(&Map {
+                        title: format!("{st}: {name}, section y = {}", eng(v.y[j0], "m")),
+                        name,
+                        base: "Pa",
+                        x: &v.x,
+                        y: &v.z,
+                        v: &rows,
+                        yflip: true,
+                        yname: "depth z",
+                        outline: &[],
+                    })?,
                 ));
             }
             if ny > 1 && nz > 1 {
@@ -408,14 +649,17 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                     .collect();
                 files.push((
                     format!("field_{name}_yz.svg"),
-                    heat_map(
-                        &format!("{name} (Pa), section x = {:.3e} m", v.x[i0]),
-                        &v.y,
-                        &v.z,
-                        &rows,
-                        true,
-                        "depth z (m)",
-                    )?,
+                    heat_map(&Map {
+                        title: format!("{st}: {name}, section x = {}", eng(v.x[i0], "m")),
+                        name,
+                        base: "Pa",
+                        x: &v.y,
+                        y: &v.z,
+                        v: &rows,
+                        yflip: true,
+                        yname: "depth z",
+                        outline: &[],
+                    })?,
                 ));
             }
         }
@@ -424,24 +668,13 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
         files.push((
             "cycle.svg".to_string(),
             line_chart(
-                "Mindlin-Deresiewicz loop",
-                "relative displacement (m)",
-                "T (N)",
+                &format!("{st}: Mindlin-Deresiewicz loop"),
+                ("relative displacement", "m"),
+                ("T", "N"),
                 &[Curve { label: "loop", x: &c.delta, y: &c.t, colour: blue }],
                 &[],
             )?,
         ));
     }
     Ok(files)
-}
-
-/// Axis tick label: three significant digits in exponent form. A tick within 1e-9 of the axis
-/// span of zero is the zero tick with rounding from the tick arithmetic (plotters gives e.g.
-/// 3.5e-18 on an axis spanning 5e-2) and prints as 0.
-fn tick(v: f64, span: f64) -> String {
-    if v.abs() <= 1e-9 * span.abs() {
-        "0".to_string()
-    } else {
-        format!("{v:.3e}")
-    }
 }

@@ -83,9 +83,9 @@ fn an_earlier_richer_result_is_replaced_whole() {
     let w = write_outputs(&poor(), &out, false).unwrap();
     let now = entries(&out);
     println!("{now:?}");
-    assert_eq!(now, vec![".stickslip-result", "result.json", "surface.csv"]);
+    assert_eq!(now, vec![".stickslip-result", "report.html", "result.json", "surface.csv"]);
     assert_eq!(title(&out), "poor");
-    assert_eq!(w.files.len(), 2);
+    assert_eq!(w.files.len(), 3);
     assert_eq!(entries(&b), vec!["out"], "temporaries or the lock left beside");
     let _ = std::fs::remove_dir_all(&b);
 }
@@ -120,10 +120,16 @@ fn foreign_files_are_refused_untouched_and_replaced_with_force() {
     std::fs::write(old.join("surface.csv"), "x").unwrap();
     std::fs::write(old.join("pressure.svg"), "x").unwrap();
     write_outputs(&poor(), &old, false).unwrap();
-    assert_eq!(entries(&old), vec![".stickslip-result", "result.json", "surface.csv"]);
+    assert_eq!(
+        entries(&old),
+        vec![".stickslip-result", "report.html", "result.json", "surface.csv"]
+    );
     // --force replaces the foreign directory whole.
     write_outputs_with(&poor(), &out, WriteOptions { plots: false, force: true }).unwrap();
-    assert_eq!(entries(&out), vec![".stickslip-result", "result.json", "surface.csv"]);
+    assert_eq!(
+        entries(&out),
+        vec![".stickslip-result", "report.html", "result.json", "surface.csv"]
+    );
     assert_eq!(entries(&b), vec!["old", "thesis"]);
     let _ = std::fs::remove_dir_all(&b);
 }
@@ -230,7 +236,10 @@ fn concurrent_writers_end_with_one_complete_result() {
     });
     let names = entries(&out);
     match title(&out).as_str() {
-        "poor" => assert_eq!(names, vec![".stickslip-result", "result.json", "surface.csv"]),
+        "poor" => assert_eq!(
+            names,
+            vec![".stickslip-result", "report.html", "result.json", "surface.csv"]
+        ),
         _ => assert!(
             names.contains(&"field.csv".to_string()) && names.iter().any(|n| n.ends_with(".svg"))
         ),

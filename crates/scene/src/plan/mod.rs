@@ -27,7 +27,7 @@ use std::fmt;
 
 mod build;
 mod checks;
-mod cost;
+pub(crate) mod cost;
 mod machine;
 pub mod recipe;
 

@@ -1,0 +1,405 @@
+//! `report.html`: one self-contained page per run (inline CSS and SVG, no script, nothing
+//! fetched), written beside result.json: the scene as given and as resolved, the plan, the
+//! key results, the audit, the plots and the solver's figures.
+
+use std::fmt::Write as _;
+
+use crate::exec::outcome::{Outcome, SurfaceOut};
+use crate::plan::Plan;
+use crate::scene::Scene;
+
+/// What the report shows beyond the outcome: the scene and its plan, when the caller has them
+/// (a library caller that only holds an [`Outcome`] gets a report without these sections).
+#[derive(Debug, Clone, Copy)]
+pub struct ReportContext<'a> {
+    /// The scene as read.
+    pub scene: &'a Scene,
+    /// Its plan.
+    pub plan: &'a Plan,
+}
+
+/// Text made safe inside HTML elements and attribute values.
+fn esc(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => o.push_str("&amp;"),
+            '<' => o.push_str("&lt;"),
+            '>' => o.push_str("&gt;"),
+            '"' => o.push_str("&quot;"),
+            '\'' => o.push_str("&#39;"),
+            _ => o.push(c),
+        }
+    }
+    o
+}
+
+/// `v` with an SI prefix chosen so that the mantissa lies in [1, 1000), four significant
+/// digits: `eng(2.5e-4, "m")` is "250.0 µm", `eng(1.2e9, "Pa")` is "1.200 GPa".
+pub(crate) fn eng(v: f64, unit: &str) -> String {
+    if !v.is_finite() {
+        return format!("{v} {unit}");
+    }
+    if v == 0.0 {
+        return format!("0 {unit}");
+    }
+    let e3 = ((v.abs().log10() / 3.0).floor() as i32).clamp(-5, 3);
+    let prefix = match e3 {
+        -5 => "f",
+        -4 => "p",
+        -3 => "n",
+        -2 => "µ",
+        -1 => "m",
+        0 => "",
+        1 => "k",
+        2 => "M",
+        _ => "G",
+    };
+    let m = v / 10f64.powi(3 * e3);
+    let digits = if m.abs() >= 100.0 {
+        1
+    } else if m.abs() >= 10.0 {
+        2
+    } else {
+        3
+    };
+    format!("{m:.digits$} {prefix}{unit}")
+}
+
+const STYLE: &str = "body{font-family:sans-serif;max-width:1100px;margin:1.5em auto;padding:0 1em;color:#222;line-height:1.4}\
+h1{font-size:1.6em;margin-bottom:.2em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:1.6em}\
+table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:.25em .6em;text-align:left;vertical-align:top}\
+th{background:#f2f2f2}td.num{text-align:right;font-variant-numeric:tabular-nums}\
+pre{background:#f7f7f7;border:1px solid #ddd;padding:.6em;overflow-x:auto;font-size:.9em}\
+.pass{color:#1a7f37;font-weight:bold}.fail{color:#b42318;font-weight:bold}\
+figure.plot{margin:1em 0;padding:0}figure.plot svg{display:block;max-width:100%;height:auto}\
+figcaption{font-size:.9em;color:#555}nav a{margin-right:1em}";
+
+fn row(s: &mut String, name: &str, value: &str) {
+    let _ = writeln!(s, "<tr><th>{}</th><td class=\"num\">{}</td></tr>", esc(name), esc(value));
+}
+
+/// The report page. `plots` are the SVG plots (file name, SVG text) in the order written.
+pub(crate) fn render(
+    out: &Outcome,
+    ctx: Option<ReportContext<'_>>,
+    plots: &[(String, String)],
+    plots_on: bool,
+) -> String {
+    let mut s = String::new();
+    let title = esc(&out.title);
+    let _ = write!(
+        s,
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <link rel=\"icon\" href=\"data:,\">\n<title>{title}: stickslip report</title>\n\
+         <style>{STYLE}</style>\n</head>\n<body>\n<h1>{title}</h1>\n"
+    );
+    let verdict = if out.audit.passed {
+        "<span class=\"pass\">audit passed</span>"
+    } else {
+        "<span class=\"fail\">audit failed</span>"
+    };
+    let _ = writeln!(
+        s,
+        "<p>stickslip {} · {verdict} · solved in {} · effects on: {}</p>",
+        env!("CARGO_PKG_VERSION"),
+        esc(&crate::plan::cost::human_seconds(out.solver.seconds)),
+        esc(&out.effects.on.join(", "))
+    );
+    s.push_str(
+        "<nav><a href=\"#results\">Key results</a><a href=\"#plan\">Plan</a>\
+         <a href=\"#scene\">Scene</a><a href=\"#audit\">Audit</a><a href=\"#plots\">Plots</a>\
+         <a href=\"#solver\">Solver</a></nav>\n",
+    );
+    results(&mut s, out, ctx);
+    plan(&mut s, out, ctx);
+    scene(&mut s, ctx);
+    audit(&mut s, out);
+    figures(&mut s, plots, plots_on);
+    solver(&mut s, out);
+    s.push_str("</body>\n</html>\n");
+    s
+}
+
+fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
+    // 2D (plane strain) loads are per unit length.
+    let two_d = ctx.map(|c| c.scene.geometry.is_2d());
+    let (f, m) = match two_d {
+        Some(true) => ("N/m", "N m/m"),
+        Some(false) => ("N", "N m"),
+        None => ("N (N/m in 2D)", "N m (N m/m in 2D)"),
+    };
+    s.push_str("<h2 id=\"results\">Key results</h2>\n<table>\n");
+    let c = &out.contact;
+    row(s, "contact half-width a", &eng(c.a, "m"));
+    row(s, "contact half-width b", &eng(c.b, "m"));
+    row(s, "peak pressure p0", &eng(c.p0, "Pa"));
+    if let Some(h) = c.indentation {
+        row(s, "indentation", &eng(h, "m"));
+    }
+    row(s, "normal load", &eng(c.normal_load, f));
+    if let Some(a) = c.area {
+        row(s, "contact area", &format!("{a:.4e} m²"));
+    }
+    if let Some(fr) = c.fraction {
+        row(s, "contact fraction", &format!("{fr:.4}"));
+    }
+    let fo = &out.forces;
+    row(s, "normal force", &eng(fo.normal, f));
+    row(s, "tangential force", &eng(fo.tangential, f));
+    row(s, "moment", &eng(fo.moment, m));
+    row(s, "rolling moment", &eng(fo.rolling_moment, m));
+    for (name, v, u) in [("creep force Fx", fo.fx, "N"), ("creep force Fy", fo.fy, "N")] {
+        if let Some(v) = v {
+            row(s, name, &eng(v, u));
+        }
+    }
+    if let Some(mz) = fo.mz {
+        row(s, "spin moment Mz", &eng(mz, "N m"));
+    }
+    let r = &out.rigid_displacement;
+    if let Some(t) = r.tangential {
+        row(s, "rigid tangential displacement", &eng(t, "m"));
+    }
+    if let Some(t) = r.rotation {
+        row(s, "rigid rotation", &format!("{t:.4e} rad"));
+    }
+    let z = &out.zones;
+    let spans = |v: &[[f64; 2]]| -> String {
+        if v.is_empty() {
+            "none".to_string()
+        } else {
+            v.iter()
+                .map(|p| format!("[{}, {}]", eng(p[0], "m"), eng(p[1], "m")))
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
+    };
+    if z.grid.is_none() {
+        row(s, &format!("stick zones (along {})", z.coordinate), &spans(&z.stick));
+        row(s, &format!("slip zones (along {})", z.coordinate), &spans(&z.slip));
+    }
+    if let Some(g) = &z.grid {
+        row(s, "stick / slip elements", &format!("{} / {}", g.stick, g.slip));
+        row(s, "stick area fraction", &format!("{:.4}", g.stick_area_fraction));
+    }
+    if let Some(rl) = &out.rolling {
+        row(s, "rolling regime", rl.regime);
+        row(s, "rolling response", rl.response);
+    }
+    if let Some(cy) = &out.cycle {
+        row(s, "cycle amplitude T*/(fP)", &format!("{:.4}", cy.amplitude));
+        row(
+            s,
+            "energy per cycle (computed, closed form)",
+            &format!("{:.4e} J, {:.4e} J", cy.energy_per_cycle[0], cy.energy_per_cycle[1]),
+        );
+    }
+    if let Some(v) = out.field.volume() {
+        for (name, p) in [
+            ("peak von Mises", &v.max.von_mises),
+            ("peak Tresca", &v.max.tresca),
+            ("peak max principal", &v.max.max_principal),
+        ] {
+            row(
+                s,
+                name,
+                &format!(
+                    "{} at ({}, {}, {})",
+                    eng(p.value, "Pa"),
+                    eng(p.x, "m"),
+                    eng(p.y, "m"),
+                    eng(p.z, "m")
+                ),
+            );
+        }
+    }
+    s.push_str("</table>\n");
+    if !out.notes.is_empty() {
+        s.push_str("<p>Notes:</p>\n<ul>\n");
+        for n in &out.notes {
+            let _ = writeln!(s, "<li>{}</li>", esc(n));
+        }
+        s.push_str("</ul>\n");
+    }
+}
+
+fn plan(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
+    s.push_str("<h2 id=\"plan\">Plan</h2>\n");
+    let Some(ctx) = ctx else {
+        // Only the outcome is at hand: its effects and methods.
+        s.push_str("<table>\n<tr><th>effect</th><th>on</th><th>method or reason</th></tr>\n");
+        for e in &out.effects.on {
+            let m = out.effects.methods.get(e).map_or("", String::as_str);
+            let _ = writeln!(s, "<tr><td>{}</td><td>on</td><td>{}</td></tr>", esc(e), esc(m));
+        }
+        for (e, why) in &out.effects.off {
+            let _ = writeln!(s, "<tr><td>{}</td><td>off</td><td>{}</td></tr>", esc(e), esc(why));
+        }
+        s.push_str("</table>\n");
+        return;
+    };
+    let p = ctx.plan;
+    s.push_str("<table>\n<tr><th>effect</th><th>on</th><th>why</th><th>method</th></tr>\n");
+    for e in &p.effects {
+        let method = e.technique.map_or("", crate::plan::Technique::describe);
+        let _ = writeln!(
+            s,
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            esc(e.effect.name()),
+            if e.on { "on" } else { "off" },
+            esc(&e.reason),
+            esc(method)
+        );
+    }
+    s.push_str("</table>\n");
+    if let Some(g) = &p.grid_solver {
+        let _ = writeln!(s, "<p>Grid solver: {}</p>", esc(g));
+    }
+    if !p.notes.is_empty() {
+        s.push_str("<ul>\n");
+        for n in &p.notes {
+            let _ = writeln!(s, "<li>{}</li>", esc(n));
+        }
+        s.push_str("</ul>\n");
+    }
+    let c = p.cost;
+    let _ = writeln!(
+        s,
+        "<p>Estimate: {} evaluations, about {} on one core, {} of working memory \
+         (measured: {}).</p>",
+        c.evaluations,
+        esc(&crate::plan::cost::human_seconds(c.seconds)),
+        esc(&crate::plan::cost::human_bytes(c.memory_bytes)),
+        esc(&crate::plan::cost::human_seconds(out.solver.seconds))
+    );
+}
+
+fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
+    s.push_str("<h2 id=\"scene\">Scene</h2>\n");
+    let Some(ctx) = ctx else {
+        s.push_str("<p>The result was written without its scene (a library call that passed only the outcome).</p>\n");
+        return;
+    };
+    let sc = ctx.scene;
+    if let Some(f) = &sc.file {
+        let _ = writeln!(s, "<p>File: <code>{}</code></p>", esc(&f.display().to_string()));
+    }
+    match &sc.source {
+        Some(src) => {
+            let _ = writeln!(s, "<h3>As given</h3>\n<pre>{}</pre>", esc(src.text()));
+        }
+        None => s.push_str("<p>The scene was built in code; there is no file text.</p>\n"),
+    }
+    let named = sc.source.as_ref().map_or(&[][..], |src| src.materials());
+    if !named.is_empty() {
+        s.push_str(
+            "<p>Named materials (typical values of one grade; docs/materials.md):</p>\n<ul>\n",
+        );
+        for (table, m) in named {
+            let _ = writeln!(
+                s,
+                "<li>{}: {}, E = {}, ν = {} ({})</li>",
+                esc(table),
+                esc(m.name),
+                esc(&crate::materials::modulus(m.e)),
+                m.nu,
+                esc(&m.grade.split_whitespace().collect::<Vec<_>>().join(" "))
+            );
+        }
+        s.push_str("</ul>\n");
+    }
+    // The validated scene, every quantity converted to SI.
+    let resolved = Scene { source: None, ..sc.clone() };
+    let _ = writeln!(
+        s,
+        "<h3>As resolved</h3>\n<p>Every quantity in SI units: lengths in m, moduli and stresses \
+         in Pa, forces in N (N/m in 2D), speeds in m/s, times in s, angles in rad (in degrees \
+         where the name ends in <code>_deg</code>); a field grid with <code>scale: HalfWidth</code> \
+         is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>",
+        esc(&format!(
+            "geometry: {:#?}\nsubstrate: {:#?}\nindenter: {:#?}\nload: {:#?}\nmotion: {:#?}\noutputs: {:#?}\nsolver: {:#?}",
+            resolved.geometry,
+            resolved.substrate,
+            resolved.indenter,
+            resolved.load,
+            resolved.motion,
+            resolved.outputs,
+            resolved.solver
+        ))
+    );
+}
+
+fn audit(s: &mut String, out: &Outcome) {
+    s.push_str("<h2 id=\"audit\">Audit</h2>\n<table>\n<tr><th>check</th><th>value</th><th>limit</th><th>result</th><th>what</th></tr>\n");
+    for c in &out.audit.checks {
+        let _ = writeln!(
+            s,
+            "<tr><td>{}</td><td class=\"num\">{:.3e}</td><td class=\"num\">{:.3e}</td><td class=\"{}\">{}</td><td>{}</td></tr>",
+            esc(c.name),
+            c.value,
+            c.limit,
+            if c.pass { "pass" } else { "fail" },
+            if c.pass { "pass" } else { "fail" },
+            esc(&c.what)
+        );
+    }
+    s.push_str("</table>\n");
+}
+
+fn figures(s: &mut String, plots: &[(String, String)], plots_on: bool) {
+    s.push_str("<h2 id=\"plots\">Plots</h2>\n");
+    if !plots_on {
+        s.push_str("<p>Plots are off for this scene (<code>outputs.plots = false</code>).</p>\n");
+        return;
+    }
+    if plots.is_empty() {
+        s.push_str("<p>This result has no arrays to plot (turn on <code>outputs.surface</code>, <code>outputs.field</code> or <code>outputs.cycle</code>).</p>\n");
+        return;
+    }
+    for (i, (name, svg)) in plots.iter().enumerate() {
+        // The SVG follows its XML prologue, if any.
+        let body = svg.find("<svg").map_or(svg.as_str(), |k| &svg[k..]);
+        let _ = writeln!(
+            s,
+            "<figure class=\"plot\" id=\"plot-{i}\">\n{body}\n<figcaption>{} (also {})</figcaption>\n</figure>",
+            esc(name.trim_end_matches(".svg")),
+            esc(name)
+        );
+    }
+}
+
+fn solver(s: &mut String, out: &Outcome) {
+    let v = &out.solver;
+    s.push_str("<h2 id=\"solver\">Solver</h2>\n<table>\n");
+    row(s, "method", &v.method);
+    row(s, "iterations", &v.iterations.to_string());
+    row(s, "inner iterations", &v.inner_iterations.to_string());
+    row(s, "residual", &format!("{:.3e}", v.residual));
+    row(s, "elements", &v.elements.to_string());
+    row(s, "solve time", &crate::plan::cost::human_seconds(v.solve_seconds));
+    row(s, "total time", &crate::plan::cost::human_seconds(v.seconds));
+    if let SurfaceOut::Grid { x, y, .. } = &out.surface {
+        row(s, "grid", &format!("{} x {}", x.len(), y.len()));
+    }
+    s.push_str("</table>\n");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{eng, esc};
+
+    #[test]
+    fn engineering_prefixes() {
+        assert_eq!(eng(2.5e-4, "m"), "250.0 µm");
+        assert_eq!(eng(1.2e9, "Pa"), "1.200 GPa");
+        assert_eq!(eng(-15e3, "N/m"), "-15.00 kN/m");
+        assert_eq!(eng(0.0, "N"), "0 N");
+        assert_eq!(eng(1.0, "N"), "1.000 N");
+    }
+
+    #[test]
+    fn escaping() {
+        assert_eq!(esc("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+    }
+}
