@@ -84,3 +84,26 @@ fn moment_alone_and_together_converge_inside_the_limit_surface() {
         }
     }
 }
+
+/// The case docs/accuracy.md once recorded as a failure ("no stick component left" at 256
+/// cells across, T/fP = 2/3, traction parallel to the force): it converges, and its rigid
+/// shift matches Mindlin's relative compliance within 0.5 % (the claim of the accuracy
+/// report at this size).
+#[test]
+fn the_256_across_mindlin_case_converges_to_mindlin() {
+    use stickslip_traction::closed::Mindlin;
+    let (grid, m, f) = setup(256);
+    let p = 2160.0;
+    let t = 144.0;
+    let a = (3.0 * p * (2.0 * m.normal_compliance()) / 4.0).cbrt();
+    let want = Mindlin::new(a, p, f, t).unwrap().compliance_relative(&m, &m);
+    let s = FastProblem::new(&grid, [m, m], f, Load::polar(t, 0.0).unwrap())
+        .unwrap()
+        .with_directions(TractionDirections::ParallelToForce)
+        .unwrap()
+        .solve()
+        .unwrap();
+    let err = (s.shift.0 / want - 1.0).abs();
+    println!("256 across: {} Newton, shift error {err:.2e}", s.info.iterations);
+    assert!(err < 5e-3, "{err}");
+}
