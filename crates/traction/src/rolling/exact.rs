@@ -24,12 +24,11 @@
 //!    $D(\mathbf z_I - \mathbf z_{I^+})$, inverted by marching from the leading edge.
 
 use super::gmres::gmres;
-use super::{Creepage, RollingInfo, RollingMethod, RollingSolution};
+use super::{Creepage, RollingInfo, RollingMethod, RollingSolution, Rows};
 use crate::error::{Error, Result};
 use crate::fast::{ConvScratch, TensorConvolution};
 use crate::grid::ContactGrid;
 use crate::influence::{Compliance, InfluenceModel};
-use std::collections::HashMap;
 use stickslip_halfspace::rectangle::{shear_x_displacement, shear_y_displacement, Rect};
 use stickslip_halfspace::Material;
 
@@ -165,30 +164,25 @@ impl SteadyRolling {
         }
         let n = grid.len();
         let (hx, hy) = (grid.hx, grid.hy);
-        let x0 = grid.x.iter().copied().fold(f64::INFINITY, f64::min);
-        let y0 = grid.y.iter().copied().fold(f64::INFINITY, f64::min);
-        let cell = |k: usize| {
-            (((grid.x[k] - x0) / hx).round() as i64, ((grid.y[k] - y0) / hy).round() as i64)
-        };
-        let mut index: HashMap<(i64, i64), usize> = (0..n).map(|k| (cell(k), k)).collect();
+        let rows = Rows::of(grid)?;
+        // The lattice extended by each row's cell ahead of its leading element: displaced,
+        // never loaded.
         let mut ext = grid.clone();
         let mut up = Vec::with_capacity(n);
         for k in 0..n {
-            let (i, j) = cell(k);
-            let next = index.len();
-            let e = *index.entry((i + 1, j)).or_insert(next);
-            if e == next {
-                ext.x.push(x0 + (i + 1) as f64 * hx);
-                ext.y.push(grid.y[k]);
-                ext.pressure.push(0.0);
-                ext.patch.push(0);
-            }
-            up.push(e);
+            up.push(match rows.up[k] {
+                Some(u) => u,
+                None => {
+                    ext.x.push(rows.x0 + (rows.cell[k].0 + 1) as f64 * hx);
+                    ext.y.push(grid.y[k]);
+                    ext.pressure.push(0.0);
+                    ext.patch.push(0);
+                    ext.len() - 1
+                }
+            });
         }
         let c = Compliance::pair(&bodies[0], &bodies[1]);
         let conv = TensorConvolution::new(&ext, &c, InfluenceModel::ExactRectangle)?;
-        let mut order: Vec<usize> = (0..n).collect();
-        order.sort_by_key(|&k| std::cmp::Reverse(cell(k).0));
         // Own stiffness: K(0) - K(h_x, 0) per unit traction, over h_x (K_xy vanishes on the axis).
         let rect = Rect { x1: -0.5 * hx, x2: 0.5 * hx, y1: -0.5 * hy, y2: 0.5 * hy };
         let dxx = shear_x_displacement(&c, &rect, 0.0, 0.0).x
@@ -199,7 +193,7 @@ impl SteadyRolling {
             contact: grid.clone(),
             up,
             n_ext: ext.len(),
-            order,
+            order: rows.order,
             conv,
             d: [dxx / hx, dyy / hx],
             friction,
@@ -557,21 +551,6 @@ impl SteadyRolling {
         stick: Vec<bool>,
         info: RollingInfo,
     ) -> RollingSolution {
-        RollingSolution {
-            x: self.contact.x.clone(),
-            y: self.contact.y.clone(),
-            element_area: self.contact.element_area(),
-            pressure: self.contact.pressure.clone(),
-            qx,
-            qy,
-            sx,
-            sy,
-            stick,
-            fx: 0.0,
-            fy: 0.0,
-            mz: 0.0,
-            info,
-        }
-        .with_resultants()
+        RollingSolution::on_grid(&self.contact, [qx, qy], [sx, sy], stick, info)
     }
 }

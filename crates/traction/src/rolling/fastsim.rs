@@ -22,10 +22,9 @@
 //! the rigid slip $\mathbf w$ as it must (per-term flexibilities would tilt it). On the same grid as the exact theory; the first
 //! element of a row is half a cell from the leading edge. Cost: one pass over the elements.
 
-use super::{kalker, Creepage, RollingInfo, RollingMethod, RollingSolution};
+use super::{kalker, Creepage, RollingInfo, RollingMethod, RollingSolution, Rows};
 use crate::error::{Error, Result};
 use crate::grid::ContactGrid;
-use std::collections::HashMap;
 use std::f64::consts::PI;
 
 /// The flexibilities $(L_1, L_2, L_3)$ (m/Pa) for semi-axes `a` (rolling direction) and `b`,
@@ -76,22 +75,15 @@ pub fn solve(
     let l = flexibilities(a, b, g, nu)?;
     let mean = 0.5 * (l[0] + l[1]);
     let n = grid.len();
-    let (hx, hy) = (grid.hx, grid.hy);
-    let x0 = grid.x.iter().copied().fold(f64::INFINITY, f64::min);
-    let y0 = grid.y.iter().copied().fold(f64::INFINITY, f64::min);
-    let cell =
-        |k: usize| (((grid.x[k] - x0) / hx).round() as i64, ((grid.y[k] - y0) / hy).round() as i64);
-    let index: HashMap<(i64, i64), usize> = (0..n).map(|k| (cell(k), k)).collect();
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by_key(|&k| std::cmp::Reverse(cell(k).0));
+    let hx = grid.hx;
+    let rows = Rows::of(grid)?;
     let (mut qx, mut qy) = (vec![0.0; n], vec![0.0; n]);
     let (mut sx, mut sy) = (vec![0.0; n], vec![0.0; n]);
     let mut stick = vec![true; n];
-    for &k in &order {
-        let (i, j) = cell(k);
+    for &k in &rows.order {
         // Upstream traction, or the leading edge half a cell ahead.
-        let (prev, step) = match index.get(&(i + 1, j)) {
-            Some(&u) => ([qx[u], qy[u]], hx),
+        let (prev, step) = match rows.up[k] {
+            Some(u) => ([qx[u], qy[u]], hx),
             None => ([0.0, 0.0], 0.5 * hx),
         };
         let (x, y) = (grid.x[k] + 0.5 * step, grid.y[k]);
@@ -119,25 +111,7 @@ pub fn solve(
         qx[k] = q[0];
         qy[k] = q[1];
     }
-    Ok(RollingSolution {
-        x: grid.x.clone(),
-        y: grid.y.clone(),
-        element_area: grid.element_area(),
-        pressure: grid.pressure.clone(),
-        qx,
-        qy,
-        sx,
-        sy,
-        stick,
-        fx: 0.0,
-        fy: 0.0,
-        mz: 0.0,
-        info: RollingInfo {
-            method: RollingMethod::Fastsim,
-            iterations: 1,
-            products: 0,
-            residual: 0.0,
-        },
-    }
-    .with_resultants())
+    let info =
+        RollingInfo { method: RollingMethod::Fastsim, iterations: 1, products: 0, residual: 0.0 };
+    Ok(RollingSolution::on_grid(grid, [qx, qy], [sx, sy], stick, info))
 }

@@ -128,17 +128,64 @@ pub struct RollingSolution {
     pub info: RollingInfo,
 }
 
+/// The rows of a contact grid along the rolling direction: each element's lattice cell, its
+/// neighbour towards the leading edge when that is a contact element, and the elements
+/// ordered from the leading edge (largest x) to the trailing edge.
+pub(crate) struct Rows {
+    /// Lattice cell (i, j) of each element.
+    pub cell: Vec<(usize, usize)>,
+    /// The contact element in cell (i + 1, j), if any.
+    pub up: Vec<Option<usize>>,
+    /// Elements by decreasing i.
+    pub order: Vec<usize>,
+    /// x of the lattice's first column of centres.
+    pub x0: f64,
+}
+
+impl Rows {
+    /// The rows of `grid` (one lattice, no shared cells: `ContactGrid::lattice_cells`).
+    pub(crate) fn of(grid: &crate::ContactGrid) -> crate::Result<Self> {
+        let (nx, _, x0, _, cells) = grid.lattice_cells()?;
+        let cell: Vec<(usize, usize)> = cells.iter().map(|&c| (c % nx, c / nx)).collect();
+        let index: std::collections::HashMap<(usize, usize), usize> =
+            cell.iter().enumerate().map(|(k, &c)| (c, k)).collect();
+        let up = cell.iter().map(|&(i, j)| index.get(&(i + 1, j)).copied()).collect();
+        let mut order: Vec<usize> = (0..cell.len()).collect();
+        order.sort_by_key(|&k| std::cmp::Reverse(cell[k].0));
+        Ok(Self { cell, up, order, x0 })
+    }
+}
+
 impl RollingSolution {
-    /// Fill the resultants from the element tractions.
-    pub(crate) fn with_resultants(mut self) -> Self {
-        let a = self.element_area;
-        self.fx = a * self.qx.iter().sum::<f64>();
-        self.fy = a * self.qy.iter().sum::<f64>();
-        self.mz = a
-            * (0..self.x.len())
-                .map(|k| self.x[k] * self.qy[k] - self.y[k] * self.qx[k])
-                .sum::<f64>();
-        self
+    /// The solution on `grid`'s elements, with the resultants summed from the tractions.
+    pub(crate) fn on_grid(
+        grid: &crate::ContactGrid,
+        q: [Vec<f64>; 2],
+        s: [Vec<f64>; 2],
+        stick: Vec<bool>,
+        info: RollingInfo,
+    ) -> Self {
+        let [qx, qy] = q;
+        let [sx, sy] = s;
+        let a = grid.element_area();
+        let fx = a * qx.iter().sum::<f64>();
+        let fy = a * qy.iter().sum::<f64>();
+        let mz = a * (0..grid.len()).map(|k| grid.x[k] * qy[k] - grid.y[k] * qx[k]).sum::<f64>();
+        RollingSolution {
+            x: grid.x.clone(),
+            y: grid.y.clone(),
+            element_area: a,
+            pressure: grid.pressure.clone(),
+            qx,
+            qy,
+            sx,
+            sy,
+            stick,
+            fx,
+            fy,
+            mz,
+            info,
+        }
     }
 
     /// Fraction of the contact elements that stick.
