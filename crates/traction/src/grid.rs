@@ -448,6 +448,43 @@ impl ContactGrid {
         Ok((nx, ny, x0, y0, cell))
     }
 
+    /// The grid on the lattice coarsened 2 x 2 (spacing $2h_x, 2h_y$), with `parent[k]` the
+    /// coarse element holding fine element `k`: a coarse element wherever its block holds a
+    /// fine one, with the block's mean pressure (missing cells counting zero, so the total
+    /// normal force is kept) and the patch of its first fine element. `None` unless the
+    /// lattice is at least `2 min_cells` across in both directions.
+    pub(crate) fn coarsened(&self, min_cells: usize) -> Option<(ContactGrid, Vec<usize>)> {
+        let (nx, ny, x0, y0, cell) = self.lattice_cells().ok()?;
+        if nx < 2 * min_cells || ny < 2 * min_cells {
+            return None;
+        }
+        let cx = nx.div_ceil(2);
+        let mut index = vec![usize::MAX; cx * ny.div_ceil(2)];
+        let mut coarse = ContactGrid {
+            hx: 2.0 * self.hx,
+            hy: 2.0 * self.hy,
+            x: Vec::new(),
+            y: Vec::new(),
+            pressure: Vec::new(),
+            patch: Vec::new(),
+        };
+        let mut parent = Vec::with_capacity(self.len());
+        for (k, &c) in cell.iter().enumerate() {
+            let (i, j) = (c % nx, c / nx);
+            let b = (j / 2) * cx + i / 2;
+            if index[b] == usize::MAX {
+                index[b] = coarse.x.len();
+                coarse.x.push(x0 + (2.0 * (i / 2) as f64 + 0.5) * self.hx);
+                coarse.y.push(y0 + (2.0 * (j / 2) as f64 + 0.5) * self.hy);
+                coarse.pressure.push(0.0);
+                coarse.patch.push(self.patch[k]);
+            }
+            coarse.pressure[index[b]] += 0.25 * self.pressure[k];
+            parent.push(index[b]);
+        }
+        Some((coarse, parent))
+    }
+
     /// The full-slip moment about the centre of the normal force,
     /// $M_f = f\,h_xh_y\sum_k p_k\,\lvert\mathbf x_k - \mathbf c\rvert$: every element
     /// slipping at $f p_k$ perpendicular to its radius. A twisting moment alone makes the

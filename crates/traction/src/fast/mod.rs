@@ -61,4 +61,6 @@ mod solver;
 pub(crate) use operator::fast_size;
 pub use operator::{ConvScratch, TensorConvolution};
 pub(crate) use solver::{resultant_moment, SOLVER_NAME};
-pub use solver::{FastConfig, FastInfo, FastProblem, FastSolution, TractionDirections};
+pub use solver::{
+    FastConfig, FastInfo, FastProblem, FastSolution, TractionDirections, WarmStart, NEST_MIN_CELLS,
+};

@@ -4,11 +4,13 @@
 
 use super::operator::{ConvScratch, TensorConvolution};
 use super::solver::{
-    resultant_moment, FastInfo, FastProblem, FastSolution, TractionDirections, SOLVER_NAME,
+    resultant_moment, FastInfo, FastProblem, FastSolution, TractionDirections, WarmStart,
+    SOLVER_NAME,
 };
 use crate::contract::LoadKind;
 use crate::error::{Error, Result};
 use crate::solve::{ElementState, Regime};
+use rayon::prelude::*;
 use std::time::Instant;
 /// A rigid-body mode evaluated at a point.
 #[derive(Debug, Clone, Copy)]
@@ -264,7 +266,38 @@ impl<'p, 'a> Solver<'p, 'a> {
         (out, scale)
     }
 
-    pub(super) fn run(mut self) -> Result<FastSolution> {
+    /// Element tractions projected on the admitted directions and clamped to the discs.
+    fn admissible(&self, t: &[(f64, f64)]) -> (Vec<f64>, Vec<f64>) {
+        let mut qx = vec![0.0; self.n];
+        let mut qy = vec![0.0; self.n];
+        for k in 0..self.n {
+            let (a, b) = self.proj(k, t[k]);
+            let r = a.hypot(b);
+            let f = if r > self.cap[k] { self.cap[k] / r } else { 1.0 };
+            if r.is_finite() {
+                qx[k] = a * f;
+                qy[k] = b * f;
+            }
+        }
+        (qx, qy)
+    }
+
+    /// Mode coefficients of a rigid shift and rotation (the inverse of
+    /// [`Solver::shift_rotation`]).
+    fn mode_coefficients(&self, shift: (f64, f64), rotation: f64) -> Vec<f64> {
+        self.modes
+            .iter()
+            .map(|m| match m {
+                Mode::Ex => shift.0,
+                Mode::Ey => shift.1,
+                Mode::Rot(..) => rotation,
+                Mode::Along(tx, ty) => shift.0 * tx + shift.1 * ty,
+            })
+            .collect()
+    }
+
+    /// Run the iteration from the capacity-weighted start (`None`) or from a warm start.
+    pub(super) fn run(mut self, start: Option<&WarmStart>) -> Result<FastSolution> {
         let t0 = Instant::now();
         let n = self.n;
         let g = self.p.grid;
@@ -272,16 +305,23 @@ impl<'p, 'a> Solver<'p, 'a> {
         if let Some(s) = self.trivial_or_gross()? {
             return Ok(s);
         }
-        let (mut qx, mut qy) = self.initial();
         let mut ux = vec![0.0; n];
         let mut uy = vec![0.0; n];
-        let mut mv = vec![0.0; self.modes.len()];
+        let (mut qx, mut qy, mut mv, mut first) = match start {
+            None => {
+                let (qx, qy) = self.initial();
+                (qx, qy, vec![0.0; self.modes.len()], true)
+            }
+            Some(w) => {
+                let (qx, qy) = self.admissible(&w.traction);
+                (qx, qy, self.mode_coefficients(w.shift, w.rotation), true)
+            }
+        };
         let mut stick = vec![true; n];
         let mut iterations = 0usize;
         let mut cg_total = 0usize;
         let mut res = f64::INFINITY;
         let mut load_res;
-        let mut first = true;
         let mut best = f64::INFINITY;
         let mut tighten = 1.0;
         let mut nvec: Vec<(f64, f64)> = vec![(0.0, 0.0); n];
@@ -302,6 +342,26 @@ impl<'p, 'a> Solver<'p, 'a> {
                     } else {
                         stick[k] = false;
                         let nk = (z.0 / zr, z.1 / zr);
+                        nvec[k] = nk;
+                        qx[k] = self.cap[k] * nk.0;
+                        qy[k] = self.cap[k] * nk.1;
+                    }
+                }
+            } else if let Some(w) = start {
+                // Warm start: the start's stick/slip state is the first active set, each slip
+                // element at its capacity along the start's traction. The first Newton step
+                // then finds the traction and rigid motion consistent with it on this grid
+                // (classifying by the start's slip instead is fragile when the start comes
+                // from another lattice, whose displacements differ by the discretisation).
+                for k in 0..n {
+                    let r = qx[k].hypot(qy[k]);
+                    let slipping = w.state.get(k) == Some(&ElementState::Slip) && r > 0.0;
+                    stick[k] = self.cap[k] > 0.0 && !slipping;
+                    if self.cap[k] == 0.0 {
+                        qx[k] = 0.0;
+                        qy[k] = 0.0;
+                    } else if slipping {
+                        let nk = (qx[k] / r, qy[k] / r);
                         nvec[k] = nk;
                         qx[k] = self.cap[k] * nk.0;
                         qy[k] = self.cap[k] * nk.1;
@@ -351,7 +411,10 @@ impl<'p, 'a> Solver<'p, 'a> {
                 self.loads.iter().zip(&have).map(|(l, h)| (l - h) / self.area).collect();
             // Inner tolerance: 1e-4 relative, tightened near convergence and whenever the
             // residual failed to decrease (inexact steps can make the active set wander).
-            let eta = (0.1 * res).clamp(1e-6, 1e-4) * tighten;
+            // Near the target, once the active set has settled a Newton step is exact up to
+            // the linear solve, so the residual falls by about eta: ask for no more than
+            // takes it below the tolerance.
+            let eta = (0.1 * res).max(0.3 * tol / res).clamp(1e-6, 1e-2) * tighten;
             let qnorm = qx.iter().chain(&qy).map(|v| v * v).sum::<f64>().sqrt();
             let abs_floor = 0.05 * tol * qnorm;
             let (x, dm, its) =
@@ -430,6 +493,7 @@ impl<'p, 'a> Solver<'p, 'a> {
             solve_seconds: t0.elapsed().as_secs_f64(),
             setup_seconds: 0.0,
             fft_size: self.op.fft_size(),
+            levels: 0,
         };
         Ok(FastSolution {
             regime,
@@ -555,26 +619,39 @@ impl<'p, 'a> Solver<'p, 'a> {
                 solve_seconds: t0.elapsed().as_secs_f64(),
                 setup_seconds: 0.0,
                 fft_size: self.op.fft_size(),
+                levels: 0,
             },
         }))
     }
 
-    /// $H x$ with $H = P^{\mathsf T}KP + D$.
-    fn h_apply(&mut self, dofs: &[Dof], diag_d: &[f64], x: &[f64], out: &mut [f64]) {
+    /// $H x$ with $H = P^{\mathsf T}KP + D$; `first[k]..first[k + 1]` are the dofs of
+    /// element $k$ (dofs are in element order).
+    fn h_apply(
+        &mut self,
+        dofs: &[Dof],
+        first: &[usize],
+        diag_d: &[f64],
+        x: &[f64],
+        out: &mut [f64],
+    ) {
         let mut px = std::mem::take(&mut self.wx);
         let mut py = std::mem::take(&mut self.wy);
         let mut vx = std::mem::take(&mut self.vx);
         let mut vy = std::mem::take(&mut self.vy);
-        px.fill(0.0);
-        py.fill(0.0);
-        for (d, xv) in dofs.iter().zip(x) {
-            px[d.k] += xv * d.e.0;
-            py[d.k] += xv * d.e.1;
-        }
+        px.par_iter_mut().zip(py.par_iter_mut()).enumerate().for_each(|(k, (a, b))| {
+            let (mut sa, mut sb) = (0.0, 0.0);
+            for i in first[k]..first[k + 1] {
+                sa += x[i] * dofs[i].e.0;
+                sb += x[i] * dofs[i].e.1;
+            }
+            *a = sa;
+            *b = sb;
+        });
         self.product(&px, &py, &mut vx, &mut vy);
-        for (i, d) in dofs.iter().enumerate() {
-            out[i] = d.e.0 * vx[d.k] + d.e.1 * vy[d.k] + diag_d[i] * x[i];
-        }
+        out.par_iter_mut()
+            .zip(dofs.par_iter())
+            .zip(diag_d.par_iter().zip(x.par_iter()))
+            .for_each(|((o, d), (dd, xv))| *o = d.e.0 * vx[d.k] + d.e.1 * vy[d.k] + dd * xv);
         self.wx = px;
         self.wy = py;
         self.vx = vx;
@@ -587,6 +664,7 @@ impl<'p, 'a> Solver<'p, 'a> {
     /// projected preconditioned residual falls below `eta` times its start or below
     /// `abs_floor` (traction units). Returns $x$, $\lambda$ (the rigid-mode increments) and
     /// the iteration count.
+    #[allow(clippy::too_many_arguments)]
     fn pcg(
         &mut self,
         dofs: &[Dof],
@@ -599,22 +677,35 @@ impl<'p, 'a> Solver<'p, 'a> {
         let g = self.p.grid;
         let nd = dofs.len();
         let nm = self.modes.len();
-        // Constraint rows B_jd = m_j(x_k) . e_d and the preconditioner M = diag(H).
-        let mut bm = vec![0.0; nm * nd];
-        let mut minv = vec![0.0; nd];
-        for (i, d) in dofs.iter().enumerate() {
-            for (j, m) in self.modes.iter().enumerate() {
-                let v = m.at(g.x[d.k], g.y[d.k]);
-                bm[j * nd + i] = v.0 * d.e.0 + v.1 * d.e.1;
-            }
-            let kd = d.e.0 * (self.k0[0] * d.e.0 + self.k0[1] * d.e.1)
-                + d.e.1 * (self.k0[1] * d.e.0 + self.k0[2] * d.e.1);
-            minv[i] = 1.0 / (kd + diag_d[i]);
+        // Element -> dof ranges (dofs come in element order).
+        let mut first = vec![0usize; self.n + 1];
+        for d in dofs {
+            first[d.k + 1] += 1;
         }
+        for k in 0..self.n {
+            first[k + 1] += first[k];
+        }
+        // Constraint rows B_jd = m_j(x_k) . e_d per dof and the preconditioner M = diag(H).
+        let modes = &self.modes;
+        let k0 = self.k0;
+        let (bm, minv): (Vec<[f64; 3]>, Vec<f64>) = dofs
+            .par_iter()
+            .zip(diag_d.par_iter())
+            .map(|(d, dd)| {
+                let mut row = [0.0; 3];
+                for (j, m) in modes.iter().enumerate() {
+                    let v = m.at(g.x[d.k], g.y[d.k]);
+                    row[j] = v.0 * d.e.0 + v.1 * d.e.1;
+                }
+                let kd = d.e.0 * (k0[0] * d.e.0 + k0[1] * d.e.1)
+                    + d.e.1 * (k0[1] * d.e.0 + k0[2] * d.e.1);
+                (row, 1.0 / (kd + dd))
+            })
+            .unzip();
         let mut w = [[0.0; 3]; 3];
         for i in 0..nm {
             for j in 0..nm {
-                w[i][j] = (0..nd).map(|d| bm[i * nd + d] * minv[d] * bm[j * nd + d]).sum();
+                w[i][j] = bm.par_iter().zip(minv.par_iter()).map(|(r, m)| r[i] * m * r[j]).sum();
             }
         }
         let no_stick = || Error::NoStickLeft {
@@ -626,66 +717,88 @@ impl<'p, 'a> Solver<'p, 'a> {
         if small_spd_solve(&w, nm, &[1.0; 3][..nm]).is_none() {
             return Err(no_stick());
         }
+        // c = B M^-1 r.
+        let bmr = |r: &[f64]| -> [f64; 3] {
+            r.par_iter()
+                .zip(bm.par_iter().zip(minv.par_iter()))
+                .map(|(rv, (row, m))| {
+                    let t = m * rv;
+                    [row[0] * t, row[1] * t, row[2] * t]
+                })
+                .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]])
+        };
         // z = M^-1 (r - B^T l), l = W^-1 B M^-1 r. The residual itself is replaced by
         // r - B^T l (the "residual update" of Gould, Hribar & Nocedal, §6): it leaves the
         // iteration unchanged in exact arithmetic and keeps r small, so that z stays in the
-        // null space of B to rounding; the l are summed into the multiplier.
-        let project = |r: &mut [f64], z: &mut [f64], acc: &mut [f64; 3]| -> Option<()> {
-            let mut c = [0.0; 3];
-            for (j, cj) in c.iter_mut().enumerate().take(nm) {
-                *cj = (0..nd).map(|d| bm[j * nd + d] * minv[d] * r[d]).sum();
-            }
+        // null space of B to rounding; the l are summed into the multiplier. Returns
+        // (r.z, |z|^2).
+        let project = |r: &mut [f64], z: &mut [f64], c: [f64; 3], acc: &mut [f64; 3]| {
             let l = small_spd_solve(&w, nm, &c[..nm])?;
-            for d in 0..nd {
-                let bt: f64 = (0..nm).map(|j| bm[j * nd + d] * l[j]).sum();
-                r[d] -= bt;
-                z[d] = minv[d] * r[d];
-            }
             for j in 0..nm {
                 acc[j] += l[j];
             }
-            Some(())
+            let (rz, zz) = r
+                .par_iter_mut()
+                .zip(z.par_iter_mut())
+                .zip(bm.par_iter().zip(minv.par_iter()))
+                .map(|((rv, zv), (row, m))| {
+                    *rv -= row[0] * l[0] + row[1] * l[1] + row[2] * l[2];
+                    *zv = m * *rv;
+                    (*rv * *zv, *zv * *zv)
+                })
+                .reduce(|| (0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+            Some((rz, zz))
         };
         // x0 = M^-1 B^T W^-1 b.
         let l0 = small_spd_solve(&w, nm, b).ok_or_else(no_stick)?;
-        let mut x: Vec<f64> = (0..nd)
-            .map(|d| minv[d] * (0..nm).map(|j| bm[j * nd + d] * l0[j]).sum::<f64>())
+        let mut x: Vec<f64> = bm
+            .par_iter()
+            .zip(minv.par_iter())
+            .map(|(row, m)| m * (row[0] * l0[0] + row[1] * l0[1] + row[2] * l0[2]))
             .collect();
         let mut hx = vec![0.0; nd];
-        self.h_apply(dofs, diag_d, &x, &mut hx);
-        let mut r: Vec<f64> = rhs.iter().zip(&hx).map(|(a, b)| a - b).collect();
+        self.h_apply(dofs, &first, diag_d, &x, &mut hx);
+        let mut r: Vec<f64> = rhs.par_iter().zip(hx.par_iter()).map(|(a, b)| a - b).collect();
+        drop(hx);
         let mut z = vec![0.0; nd];
         let mut acc = [0.0; 3];
-        project(&mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
-        let norm = |v: &[f64]| v.iter().map(|a| a * a).sum::<f64>().sqrt();
-        let z0 = norm(&z);
-        let stop = (eta * z0).max(abs_floor);
+        let c0 = bmr(&r);
+        let (mut rz, zz) = project(&mut r, &mut z, c0, &mut acc).ok_or_else(no_stick)?;
+        let stop = (eta * zz.sqrt()).max(abs_floor);
+        let mut znorm = zz.sqrt();
         let mut p = z.clone();
-        let mut rz: f64 = r.iter().zip(&z).map(|(a, b)| a * b).sum();
         let mut hp = vec![0.0; nd];
         let mut its = 0;
-        while norm(&z) > stop && its < self.p.config.max_cg() {
-            self.h_apply(dofs, diag_d, &p, &mut hp);
-            let php: f64 = p.iter().zip(&hp).map(|(a, b)| a * b).sum();
+        while znorm > stop && its < self.p.config.max_cg() {
+            self.h_apply(dofs, &first, diag_d, &p, &mut hp);
+            let php: f64 = p.par_iter().zip(hp.par_iter()).map(|(a, b)| a * b).sum();
             if php.is_nan() || php <= 0.0 {
                 return Err(Error::NotPositiveDefinite { index: its });
             }
             let alpha = rz / php;
-            for i in 0..nd {
-                x[i] += alpha * p[i];
-                r[i] -= alpha * hp[i];
-            }
-            project(&mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
-            let rz_new: f64 = r.iter().zip(&z).map(|(a, b)| a * b).sum();
+            // x += alpha p, r -= alpha Hp, and c = B M^-1 r in the same pass.
+            let c = x
+                .par_iter_mut()
+                .zip(r.par_iter_mut())
+                .zip(p.par_iter().zip(hp.par_iter()))
+                .zip(bm.par_iter().zip(minv.par_iter()))
+                .map(|(((xv, rv), (pv, hv)), (row, m))| {
+                    *xv += alpha * pv;
+                    *rv -= alpha * hv;
+                    let t = m * *rv;
+                    [row[0] * t, row[1] * t, row[2] * t]
+                })
+                .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]]);
+            let (rz_new, zz) = project(&mut r, &mut z, c, &mut acc).ok_or_else(no_stick)?;
             let beta = rz_new / rz;
             rz = rz_new;
-            for i in 0..nd {
-                p[i] = z[i] + beta * p[i];
-            }
+            znorm = zz.sqrt();
+            p.par_iter_mut().zip(z.par_iter()).for_each(|(pv, zv)| *pv = zv + beta * *pv);
             its += 1;
         }
         // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc), r now M^-1-orthogonal to B.
-        project(&mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        let c1 = bmr(&r);
+        project(&mut r, &mut z, c1, &mut acc).ok_or_else(no_stick)?;
         let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
         Ok((x, lam, its))
     }

@@ -25,6 +25,10 @@ use std::sync::Arc;
 
 type C64 = Complex<f64>;
 
+/// Columns (forward) or rows (inverse) handled together by one task of the 2D FFTs: the
+/// transposes between the row and column passes then move whole cache lines.
+const BLOCK: usize = 16;
+
 /// Smallest even 5-smooth integer $\ge n$ (fast FFT sizes for rustfft/realfft).
 pub(crate) fn fast_size(n: usize) -> usize {
     let mut m = n.max(2);
@@ -60,6 +64,9 @@ pub struct TensorConvolution {
     mxh: usize,
     /// Lattice cell `j * nx + i` of each element.
     cell: Vec<usize>,
+    /// The elements of each lattice row, `(i, k)` pairs, rows `row_ptr[j]..row_ptr[j + 1]`.
+    row_items: Vec<(usize, usize)>,
+    row_ptr: Vec<usize>,
     /// Real spectra of $K_{xx}, K_{xy}, K_{yy}$, layout `[i * my + j]`, $i < M_x/2+1$.
     kxx: Vec<f64>,
     kxy: Vec<f64>,
@@ -110,6 +117,7 @@ impl TensorConvolution {
         let mxh = mx / 2 + 1;
         let mut rplan = RealFftPlanner::<f64>::new();
         let mut cplan = FftPlanner::<f64>::new();
+        let (row_items, row_ptr) = rows_of(&cell, nx, ny);
         let mut op = Self {
             n,
             nx,
@@ -118,6 +126,8 @@ impl TensorConvolution {
             my,
             mxh,
             cell,
+            row_items,
+            row_ptr,
             kxx: Vec::new(),
             kxy: Vec::new(),
             kyy: Vec::new(),
@@ -233,7 +243,7 @@ impl TensorConvolution {
         ConvScratch {
             lat: [vec![0.0; self.nx * self.ny], vec![0.0; self.nx * self.ny]],
             rowspec: [vec![z; self.ny * self.mxh], vec![z; self.ny * self.mxh]],
-            spec: [vec![z; self.mxh * self.my], vec![z; self.mxh * self.my]],
+            spec: [vec![z; self.mxh * self.ny], vec![z; self.mxh * self.ny]],
         }
     }
 
@@ -256,49 +266,157 @@ impl TensorConvolution {
                 let _ = self.r2c.process_with_scratch(row, out, scr);
             },
         );
-        spec.par_chunks_mut(my).enumerate().for_each_init(
+        // Columns in blocks of BLOCK: each row contributes BLOCK adjacent values per block,
+        // so the transpose reads whole cache lines instead of one value per row.
+        let rowspec: &[C64] = rowspec;
+        spec.par_chunks_mut(BLOCK * my).enumerate().for_each_init(
             || vec![C64::new(0.0, 0.0); self.col_fwd.get_inplace_scratch_len()],
-            |scr, (i, col)| {
-                for (j, v) in col.iter_mut().enumerate() {
-                    *v = if j < rows { rowspec[j * mxh + i] } else { C64::new(0.0, 0.0) };
+            |scr, (ib, cols)| {
+                let i0 = ib * BLOCK;
+                let nb = cols.len() / my;
+                for j in 0..rows {
+                    let src = &rowspec[j * mxh + i0..j * mxh + i0 + nb];
+                    for (b, v) in src.iter().enumerate() {
+                        cols[b * my + j] = *v;
+                    }
                 }
-                self.col_fwd.process_with_scratch(col, scr);
+                for b in 0..nb {
+                    cols[b * my + rows..(b + 1) * my].fill(C64::new(0.0, 0.0));
+                }
+                for col in cols.chunks_exact_mut(my) {
+                    self.col_fwd.process_with_scratch(col, scr);
+                }
             },
         );
     }
 
-    /// Column inverse FFTs of `spec`, then inverse row FFTs of the first `ny` rows into
-    /// `lat` (row-major $n_y\times n_x$), scaled by $1/(M_xM_y)$.
-    fn inverse(&self, spec: &mut [C64], rowspec: &mut [C64], lat: &mut [f64]) {
+    /// The fused column pass of a product: for each block of columns of the row spectra
+    /// `rows` (one per component, $n_y\times(M_x/2+1)$ row-major), the column FFTs of the
+    /// zero-padded columns, the kernel product ([`TensorConvolution::multiply`]) and the
+    /// inverse column FFTs, keeping the first $n_y$ entries of each column in `cols`
+    /// (column-major, `[i * ny + j]`). A block stays in cache from the forward to the
+    /// inverse transform, so the padded spectrum never goes to memory.
+    fn columns(&self, rows: &[&[C64]], cols: &mut [Vec<C64>]) {
+        let (my, mxh, ny) = (self.my, self.mxh, self.ny);
+        // Column stride in the block buffer: padded off a power of two so that the BLOCK
+        // columns written row by row do not all map to the same cache sets.
+        let ms = my + 8;
+        let nc = rows.len();
+        let z = C64::new(0.0, 0.0);
+        let mut outs: Vec<_> = cols.iter_mut().map(|c| c.par_chunks_mut(BLOCK * ny)).collect();
+        let work = |(buf, scr): &mut (Vec<C64>, Vec<C64>), ib: usize, out: &mut [&mut [C64]]| {
+            let i0 = ib * BLOCK;
+            let nb = out[0].len() / ny;
+            for c in 0..nc {
+                let b0 = &mut buf[c * BLOCK * ms..(c + 1) * BLOCK * ms];
+                for j in 0..ny {
+                    let src = &rows[c][j * mxh + i0..j * mxh + i0 + nb];
+                    for (b, v) in src.iter().enumerate() {
+                        b0[b * ms + j] = *v;
+                    }
+                }
+                for b in 0..nb {
+                    let col = &mut b0[b * ms..b * ms + my];
+                    col[ny..].fill(z);
+                    self.col_fwd.process_with_scratch(col, scr);
+                }
+            }
+            for b in 0..nb {
+                let k0 = (i0 + b) * my;
+                if nc == 1 {
+                    let col = &mut buf[b * ms..b * ms + my];
+                    for (v, k) in col.iter_mut().zip(&self.kxx[k0..k0 + my]) {
+                        *v *= *k;
+                    }
+                } else {
+                    let (bx, by) = buf.split_at_mut(BLOCK * ms);
+                    let cx = &mut bx[b * ms..b * ms + my];
+                    let cy = &mut by[b * ms..b * ms + my];
+                    let kxx = &self.kxx[k0..k0 + my];
+                    let kxy = &self.kxy[k0..k0 + my];
+                    let kyy = &self.kyy[k0..k0 + my];
+                    for t in 0..my {
+                        let (a, e) = (cx[t], cy[t]);
+                        cx[t] = a * kxx[t] + e * kxy[t];
+                        cy[t] = a * kxy[t] + e * kyy[t];
+                    }
+                }
+            }
+            for (c, o) in out.iter_mut().enumerate() {
+                let b0 = &mut buf[c * BLOCK * ms..(c + 1) * BLOCK * ms];
+                for b in 0..nb {
+                    let col = &mut b0[b * ms..b * ms + my];
+                    self.col_inv.process_with_scratch(col, scr);
+                    o[b * ny..(b + 1) * ny].copy_from_slice(&col[..ny]);
+                }
+            }
+        };
+        let init = || {
+            let scr =
+                self.col_fwd.get_inplace_scratch_len().max(self.col_inv.get_inplace_scratch_len());
+            (vec![z; nc * BLOCK * ms], vec![z; scr])
+        };
+        if nc == 1 {
+            let o0 = outs.pop().expect("one component");
+            o0.enumerate().for_each_init(init, |st, (ib, a)| work(st, ib, &mut [a]));
+        } else {
+            let o1 = outs.pop().expect("two components");
+            let o0 = outs.pop().expect("two components");
+            o0.zip(o1)
+                .enumerate()
+                .for_each_init(init, |st, (ib, (a, b))| work(st, ib, &mut [a, b]));
+        }
+    }
+
+    /// Inverse row FFTs of the kept column entries `cols` (`[i * ny + j]`) into `lat`
+    /// (row-major $n_y\times n_x$), scaled by $1/(M_xM_y)$.
+    fn rows_inverse(&self, cols: &[C64], rowbuf: &mut [C64], lat: &mut [f64]) {
         let (mx, my, mxh, nx, ny) = (self.mx, self.my, self.mxh, self.nx, self.ny);
-        spec.par_chunks_mut(my).for_each_init(
-            || vec![C64::new(0.0, 0.0); self.col_inv.get_inplace_scratch_len()],
-            |scr, col| self.col_inv.process_with_scratch(col, scr),
-        );
-        let spec: &[C64] = spec;
         let scale = 1.0 / (mx as f64 * my as f64);
-        rowspec[..ny * mxh]
-            .par_chunks_mut(mxh)
-            .zip(lat.par_chunks_mut(nx))
+        // Rows in blocks of BLOCK (the transpose reads BLOCK adjacent values per column).
+        rowbuf[..ny * mxh]
+            .par_chunks_mut(BLOCK * mxh)
+            .zip(lat.par_chunks_mut(BLOCK * nx))
             .enumerate()
             .for_each_init(
                 || (vec![0.0; mx], self.c2r.make_scratch_vec()),
-                |(row, scr), (j, (rs, out))| {
-                    for (i, v) in rs.iter_mut().enumerate() {
-                        *v = spec[i * my + j];
+                |(row, scr), (jb, (rsb, outb))| {
+                    let j0 = jb * BLOCK;
+                    let nb = rsb.len() / mxh;
+                    for i in 0..mxh {
+                        let src = &cols[i * ny + j0..i * ny + j0 + nb];
+                        for (b, v) in src.iter().enumerate() {
+                            rsb[b * mxh + i] = *v;
+                        }
                     }
-                    // The DC and (even sizes) Nyquist bins of a real signal are real; clear
-                    // the rounding.
-                    rs[0].im = 0.0;
-                    if mx % 2 == 0 {
-                        rs[mxh - 1].im = 0.0;
-                    }
-                    let _ = self.c2r.process_with_scratch(rs, row, scr);
-                    for (o, r) in out.iter_mut().zip(row.iter()) {
-                        *o = r * scale;
+                    for (rs, out) in rsb.chunks_exact_mut(mxh).zip(outb.chunks_exact_mut(nx)) {
+                        // The DC and (even sizes) Nyquist bins of a real signal are real;
+                        // clear the rounding.
+                        rs[0].im = 0.0;
+                        if mx % 2 == 0 {
+                            rs[mxh - 1].im = 0.0;
+                        }
+                        let _ = self.c2r.process_with_scratch(rs, row, scr);
+                        for (o, r) in out.iter_mut().zip(row.iter()) {
+                            *o = r * scale;
+                        }
                     }
                 },
             );
+    }
+
+    /// Row FFTs of the $n_y$ lattice rows filled by `fill` into `rowspec`.
+    fn rows_forward(&self, fill: impl Fn(usize, &mut [f64]) + Sync, rowspec: &mut [C64]) {
+        let (mx, mxh) = (self.mx, self.mxh);
+        rowspec[..self.ny * mxh].par_chunks_mut(mxh).enumerate().for_each_init(
+            || (vec![0.0; mx], self.r2c.make_scratch_vec()),
+            |(row, scr), (j, out)| {
+                row.fill(0.0);
+                fill(j, row);
+                // Lengths are consistent by construction; realfft only errs on length.
+                let _ = self.r2c.process_with_scratch(row, out, scr);
+            },
+        );
     }
 
     /// $\mathbf u = K * \mathbf q$: in-plane displacement at every element centre due to the
@@ -320,39 +438,46 @@ impl TensorConvolution {
     ) {
         assert!(qx.len() == self.n && qy.len() == self.n, "traction length");
         assert!(ux.len() == self.n && uy.len() == self.n, "displacement length");
-        let nx = self.nx;
         for (f, q) in [qx, qy].into_iter().enumerate() {
-            let lat = &mut s.lat[f];
-            lat.fill(0.0);
-            for (&c, &v) in self.cell.iter().zip(q) {
-                lat[c] = v;
-            }
-            let lat: &[f64] = lat;
-            self.forward(
-                self.ny,
-                |j, row| row[..nx].copy_from_slice(&lat[j * nx..(j + 1) * nx]),
+            self.rows_forward(
+                |j, row| {
+                    for &(i, k) in &self.row_items[self.row_ptr[j]..self.row_ptr[j + 1]] {
+                        row[i] = q[k];
+                    }
+                },
                 &mut s.rowspec[f],
-                &mut s.spec[f],
             );
         }
         {
-            let [sx, sy] = &mut s.spec;
-            sx.par_iter_mut()
-                .zip(sy.par_iter_mut())
-                .zip(self.kxx.par_iter().zip(self.kxy.par_iter()).zip(self.kyy.par_iter()))
-                .for_each(|((a, b), ((kxx, kxy), kyy))| {
-                    let (qa, qb) = (*a, *b);
-                    *a = qa * *kxx + qb * *kxy;
-                    *b = qa * *kxy + qb * *kyy;
-                });
+            let [rx, ry] = &s.rowspec;
+            self.columns(&[rx, ry], &mut s.spec);
         }
         for (f, u) in [ux, uy].into_iter().enumerate() {
-            self.inverse(&mut s.spec[f], &mut s.rowspec[f], &mut s.lat[f]);
-            for (o, &c) in u.iter_mut().zip(&self.cell) {
-                *o = s.lat[f][c];
-            }
+            self.rows_inverse(&s.spec[f], &mut s.rowspec[f], &mut s.lat[f]);
+            let lat: &[f64] = &s.lat[f];
+            u.par_iter_mut().zip(self.cell.par_iter()).for_each(|(o, &c)| *o = lat[c]);
         }
     }
+}
+
+/// The elements of each lattice row as `(i, k)` pairs in CSR form (`ptr` has `ny + 1`
+/// entries), so that the row FFTs read their elements directly.
+fn rows_of(cell: &[usize], nx: usize, ny: usize) -> (Vec<(usize, usize)>, Vec<usize>) {
+    let mut ptr = vec![0usize; ny + 1];
+    for &c in cell {
+        ptr[c / nx + 1] += 1;
+    }
+    for j in 0..ny {
+        ptr[j + 1] += ptr[j];
+    }
+    let mut next = ptr.clone();
+    let mut items = vec![(0, 0); cell.len()];
+    for (k, &c) in cell.iter().enumerate() {
+        let j = c / nx;
+        items[next[j]] = (c % nx, k);
+        next[j] += 1;
+    }
+    (items, ptr)
 }
 
 /// The scalar (normal) operator on a full $n_x\times n_y$ lattice, for [`crate::normal`]:
@@ -370,6 +495,8 @@ impl TensorConvolution {
             my,
             mxh: mx / 2 + 1,
             cell: Vec::new(),
+            row_items: Vec::new(),
+            row_ptr: Vec::new(),
             kxx: Vec::new(),
             kxy: Vec::new(),
             kyy: Vec::new(),
@@ -451,7 +578,7 @@ impl TensorConvolution {
         ConvScratch {
             lat: [Vec::new(), Vec::new()],
             rowspec: [vec![z; self.ny * self.mxh], Vec::new()],
-            spec: [vec![z; self.mxh * self.my], Vec::new()],
+            spec: [vec![z; self.mxh * self.ny], Vec::new()],
         }
     }
 
@@ -462,14 +589,9 @@ impl TensorConvolution {
         let nx = self.nx;
         let [rowspec, _] = &mut s.rowspec;
         let [spec, _] = &mut s.spec;
-        self.forward(
-            self.ny,
-            |j, row| row[..nx].copy_from_slice(&q[j * nx..(j + 1) * nx]),
-            rowspec,
-            spec,
-        );
-        spec.par_iter_mut().zip(self.kxx.par_iter()).for_each(|(a, k)| *a *= *k);
-        self.inverse(spec, rowspec, u);
+        self.rows_forward(|j, row| row[..nx].copy_from_slice(&q[j * nx..(j + 1) * nx]), rowspec);
+        self.columns(&[rowspec], std::slice::from_mut(spec));
+        self.rows_inverse(spec, rowspec, u);
     }
 }
 

@@ -15,6 +15,15 @@ use stickslip_quad::Tolerance;
 /// The fast solver's name, as in its errors.
 pub(crate) const SOLVER_NAME: &str = "fast solver (semismooth Newton)";
 
+/// The smallest lattice, in cells across in each direction, that [`FastProblem::solve`]
+/// starts from a coarser lattice's solution: a lattice of at least twice this is coarsened
+/// 2 x 2, down to between this and twice this. Below it a cold start is cheap.
+pub const NEST_MIN_CELLS: usize = 48;
+
+/// Relative residual at which the coarse levels of [`FastProblem::solve`] stop (or the
+/// problem's own tolerance if looser).
+const COARSE_TOLERANCE: f64 = 1e-5;
+
 /// Which traction directions are admitted.
 #[derive(Debug, Clone, PartialEq)]
 pub enum TractionDirections {
@@ -125,6 +134,39 @@ pub struct FastInfo {
     pub setup_seconds: f64,
     /// Padded FFT size $(M_x, M_y)$.
     pub fft_size: (usize, usize),
+    /// Coarser lattices solved first to start this one ([`FastProblem::solve`]'s nested
+    /// start; 0 for a cold or caller-given start). Their work is included in
+    /// `solve_seconds` but not in the iteration and product counts.
+    pub levels: usize,
+}
+
+/// A starting point for [`FastProblem::solve_from`]: element tractions and the rigid motion,
+/// e.g. the solution of a neighbouring load on the same grid (load paths, sweeps) or a
+/// coarser lattice's solution carried to this one. It only changes where the iteration
+/// starts: the converged result meets the same conditions and tolerance as a cold start.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WarmStart {
+    /// Traction of each element (clamped to the element's disc and projected on its admitted
+    /// direction before use).
+    pub traction: Vec<(f64, f64)>,
+    /// Rigid shift of the two bodies.
+    pub shift: (f64, f64),
+    /// Rigid rotation about the load's centre (ignored without a moment).
+    pub rotation: f64,
+    /// Stick or slip of each element: the first active set (empty: every loaded element
+    /// starts in stick). A slip element starts at its capacity along its start traction.
+    pub state: Vec<ElementState>,
+}
+
+impl From<&FastSolution> for WarmStart {
+    fn from(s: &FastSolution) -> Self {
+        Self {
+            traction: s.traction.clone(),
+            shift: s.shift,
+            rotation: s.rotation,
+            state: s.state.clone(),
+        }
+    }
 }
 
 /// The solution of a fast solve.
@@ -293,14 +335,99 @@ impl<'a> FastProblem<'a> {
     ///
     /// # Errors
     /// As [`FastProblem::solve_with`] and [`TensorConvolution::new`].
+    ///
+    /// On lattices of at least [`NEST_MIN_CELLS`] cells across in both directions (free or
+    /// force-parallel directions) the iteration starts from the solution of the same problem
+    /// on the lattice coarsened 2 x 2 (itself solved the same way): the active set is then
+    /// nearly right, and the fine lattice needs a few Newton steps instead of creeping from
+    /// full stick. If the coarse solve or the warm solve fails, the fine lattice is solved
+    /// again from a cold start, so the nesting never turns a solvable problem into a failure.
     pub fn solve(&self) -> Result<FastSolution> {
         let t0 = Instant::now();
         let op = self.operator()?;
         let mut scratch = op.make_scratch();
         let setup = t0.elapsed().as_secs_f64();
-        let mut s = self.solve_with(&op, &mut scratch)?;
+        let t1 = Instant::now();
+        let nested = self.coarse_start();
+        let mut s = match &nested {
+            Some((start, levels)) => match self.solve_from(&op, &mut scratch, start) {
+                Ok(mut s) => {
+                    s.info.levels = *levels;
+                    s
+                }
+                Err(_) => self.solve_with(&op, &mut scratch)?,
+            },
+            None => self.solve_with(&op, &mut scratch)?,
+        };
         s.info.setup_seconds = setup;
+        s.info.solve_seconds = t1.elapsed().as_secs_f64();
         Ok(s)
+    }
+
+    /// The nested start of [`FastProblem::solve`]: the solution on the 2 x 2 coarsened
+    /// lattice carried to this one (each element takes its coarse element's traction), and
+    /// the number of levels below; `None` when the lattice is too small, the directions are
+    /// fixed per element, or the coarse problem fails.
+    fn coarse_start(&self) -> Option<(WarmStart, usize)> {
+        if matches!(self.directions, TractionDirections::Fixed(_)) {
+            return None;
+        }
+        let (coarse, parent) = self.grid.coarsened(NEST_MIN_CELLS)?;
+        let load = match self.load {
+            Load::Moment { moment, centre } => Load::Moment {
+                moment,
+                centre: Some(centre.unwrap_or_else(|| self.grid.force_centroid())),
+            },
+            Load::ForceAndMoment { magnitude, angle, moment, centre } => Load::ForceAndMoment {
+                magnitude,
+                angle,
+                moment,
+                centre: Some(centre.unwrap_or_else(|| self.grid.force_centroid())),
+            },
+            other => other,
+        };
+        // The coarse solution is only a start: its active set is settled well before the fine
+        // tolerance, so coarse levels stop at a looser residual.
+        let tol = self.config.tolerance().rel().max(COARSE_TOLERANCE);
+        let config = FastConfig { tolerance: Tolerance::relative(tol).ok()?, ..self.config };
+        let problem = FastProblem { grid: &coarse, load, config, ..self.clone() };
+        let s = problem.solve().ok()?;
+        let traction = parent.iter().map(|&c| s.traction[c]).collect();
+        let state = parent.iter().map(|&c| s.state[c]).collect();
+        Some((
+            WarmStart { traction, shift: s.shift, rotation: s.rotation, state },
+            s.info.levels + 1,
+        ))
+    }
+
+    /// Solve from a warm start (see [`WarmStart`]) with an operator planned by
+    /// [`FastProblem::operator`] for this grid: same conditions, tolerance and errors as
+    /// [`FastProblem::solve_with`].
+    ///
+    /// # Errors
+    /// As [`FastProblem::solve_with`]; also [`Error::LengthMismatch`] if the start's traction
+    /// has not one entry per element.
+    pub fn solve_from(
+        &self,
+        op: &TensorConvolution,
+        scratch: &mut ConvScratch,
+        start: &WarmStart,
+    ) -> Result<FastSolution> {
+        if start.traction.len() != self.grid.len() {
+            return Err(Error::LengthMismatch {
+                name: "warm-start tractions",
+                expected: self.grid.len(),
+                got: start.traction.len(),
+            });
+        }
+        if op.len() != self.grid.len() {
+            return Err(Error::LengthMismatch {
+                name: "operator elements",
+                expected: self.grid.len(),
+                got: op.len(),
+            });
+        }
+        Solver::new(self, op, scratch).run(Some(start))
     }
 
     /// Solve with an operator planned by [`FastProblem::operator`] for the same grid, bodies
@@ -338,7 +465,7 @@ impl<'a> FastProblem<'a> {
                 got: op.len(),
             });
         }
-        Solver::new(self, op, scratch).run()
+        Solver::new(self, op, scratch).run(None)
     }
 }
 
