@@ -16,6 +16,7 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::f64::consts::PI;
 use std::time::Instant;
+use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
 use stickslip_traction::{Boundary, NormalLoad, NormalOperator, NormalProblem, Tolerance};
@@ -77,34 +78,6 @@ fn surface(side: usize, h: f64) -> (Vec<f64>, f64) {
         .collect::<Vec<_>>();
     let gmin = gap.iter().copied().fold(f64::INFINITY, f64::min);
     (gap.into_iter().map(|g| g - gmin).collect(), load)
-}
-
-/// CPU time (user + system) of the process so far, seconds (from /proc; 0 if unknown): on a
-/// shared machine the wall time depends on the other load, the CPU time less (it includes
-/// the spinning of idle rayon workers).
-fn cpu_seconds() -> f64 {
-    std::fs::read_to_string("/proc/self/stat")
-        .ok()
-        .and_then(|s| {
-            let rest = s.rsplit_once(')')?.1.split_whitespace().collect::<Vec<_>>();
-            // Fields 14 and 15 (utime, stime) are at 11, 12 after the command name.
-            let u: f64 = rest.get(11)?.parse().ok()?;
-            let k: f64 = rest.get(12)?.parse().ok()?;
-            Some((u + k) / 100.0)
-        })
-        .unwrap_or(0.0)
-}
-
-/// Peak resident memory of the process (VmHWM), bytes; 0 if unknown.
-fn peak_rss() -> usize {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM:"))
-                .and_then(|l| l.split_whitespace().nth(1).and_then(|v| v.parse::<usize>().ok()))
-        })
-        .map_or(0, |kb| kb * 1024)
 }
 
 fn bench(c: &mut Criterion) {

@@ -6,6 +6,7 @@
 //! `cargo run --release -p stickslip-benches --example fast_probe -- 512`
 
 use std::time::Instant;
+use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_halfspace::Material;
 use stickslip_traction::closed::Mindlin;
 use stickslip_traction::{ContactGrid, ElementState, FastConfig, FastProblem, Load, Tolerance};
@@ -58,6 +59,7 @@ fn main() {
         return;
     }
     let cold = std::env::args().nth(3).is_some_and(|a| a == "cold");
+    let c2 = cpu_seconds();
     let t2 = Instant::now();
     let sol = if cold {
         problem.solve_with(&op, &mut scratch).expect("solve")
@@ -65,13 +67,14 @@ fn main() {
         problem.solve().expect("solve")
     };
     let secs = t2.elapsed().as_secs_f64();
+    let cpu = cpu_seconds() - c2;
     let mindlin = Mindlin::new(a, p, f, ratio * f * p).expect("Mindlin");
     let n_stick = sol.state.iter().filter(|s| **s == ElementState::Stick).count();
     let r_stick = (n_stick as f64 * h * h / std::f64::consts::PI).sqrt();
     println!(
         "across {across}: N = {n}, FFT {:?}, setup {setup:.2} s, product {:.1} ms; \
-         {} levels, {} Newton, {} CG, {} products, residual {:.1e}; solve {secs:.2} s \
-         ({:.0} % in products); stick radius {:+.2} cells, shift {:+.4} % from Mindlin",
+         {} levels, {} Newton, {} CG, {} products, residual {:.1e}; solve {secs:.2} s wall, {cpu:.2} s CPU \
+         ({:.0} % in products), peak memory {:.0} MiB; stick radius {:+.2} cells, shift {:+.4} % from Mindlin",
         sol.info.fft_size,
         1e3 * product,
         sol.info.levels,
@@ -80,7 +83,9 @@ fn main() {
         sol.info.products,
         sol.info.residual,
         100.0 * product * sol.info.products as f64 / secs,
+        peak_rss() as f64 / (1024.0 * 1024.0),
         (r_stick - mindlin.stick_radius()) / h,
         100.0 * (sol.shift.0 / mindlin.compliance_relative(&s, &s) - 1.0),
     );
 }
+

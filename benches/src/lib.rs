@@ -14,3 +14,4 @@
 
 pub mod accuracy;
 pub mod data;
+pub mod process;
