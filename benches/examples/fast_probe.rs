@@ -88,4 +88,3 @@ fn main() {
         100.0 * (sol.shift.0 / mindlin.compliance_relative(&s, &s) - 1.0),
     );
 }
-

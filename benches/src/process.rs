@@ -27,4 +27,3 @@ pub fn peak_rss() -> usize {
         })
         .map_or(0, |kb| kb * 1024)
 }
-

@@ -37,9 +37,32 @@
 //! $$\big(P^{\mathsf T}KP + D\big)\,x - B^{\mathsf T}\Delta m = P^{\mathsf T}\mathbf s,\qquad
 //!   Bx = b,\qquad D_k = \frac{\mathbf n_k\cdot\mathbf s_k}{c_k}\ \text{(slip elements)},$$
 //! with $P$ the stick components and slip tangents, $B$ the load constraints, solved by
-//! Jacobi-preconditioned projected conjugate gradients (Gould, Hribar & Nocedal 2001,
-//! *SIAM J. Sci. Comput.* 23) in which every product with $K$ is one FFT convolution:
-//! $O(N\log N)$ per iteration.
+//! projected conjugate gradients (Gould, Hribar & Nocedal 2001, *SIAM J. Sci. Comput.* 23)
+//! in which every product with $K$ is one FFT convolution: $O(N\log N)$ per iteration.
+//!
+//! **Preconditioner.** On the stick components, the inverse of the continuous half-space's
+//! tangential transfer function: Cerruti's solution in Fourier space is
+//! $\hat{\mathbf u} = |\mathbf k|^{-1}(aI - b\,\hat{\mathbf k}\hat{\mathbf k}^{\mathsf T})
+//! \hat{\mathbf q}$ with $a = \sum_i 1/G_i$ and $b = \sum_i \nu_i/G_i$, so its inverse,
+//! $|\mathbf k|\,(I/a + (1/(a-b) - 1/a)\,\hat{\mathbf k}\hat{\mathbf k}^{\mathsf T})$, grows
+//! like $|\mathbf k|$ where $K$ decays like $1/|\mathbf k|$. It is applied by one unpadded
+//! periodic FFT on the lattice's bounding box (a quarter of a padded product) with the
+//! discrete wave number $2\sin(kh/2)/h$, scaled to the Jacobi diagonal; slip tangents keep
+//! the Jacobi value $1/(K_{tt}(0) + D_k)$. The restriction of an inverse is not the inverse
+//! of the restriction, so the preconditioned system is not the identity near the stick
+//! boundary, but the spread of its spectrum no longer grows like the lattice size:
+//! measured on the Cattaneo sphere (T = 0.5 fP, residual $10^{-8}$, cold start), 56 instead
+//! of 128 CG iterations at 128 cells across and 74 instead of 210 at 256
+//! (`cargo run --release -p stickslip-benches --example fast_probe -- 256 0.5 cold`).
+//! Inner tolerances follow Eisenstat & Walker (1996): loose while the active set still
+//! moves, then no tighter than needed to bring the residual below the target.
+//!
+//! **Nested start** ([`FastProblem::solve`]): a lattice at least $2\times$
+//! [`NEST_MIN_CELLS`] across starts from its 2 x 2 coarsened lattice's solution (its stick
+//! and slip states and tractions), solved the same way to a looser residual; the fine
+//! lattice then needs about four Newton steps instead of ten or more, whatever its size.
+//! Callers solving load paths start from their previous solution with
+//! [`FastProblem::solve_from`] and [`WarmStart`].
 //!
 //! **Convergence criterion**: $\lVert\mathbf r\rVert_2 \le \varepsilon\,\lVert\mathbf q
 //! \rVert_2$ (relative residual of the complementarity conditions, in traction units: on a

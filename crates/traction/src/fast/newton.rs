@@ -80,6 +80,7 @@ fn small_spd_solve(a: &[[f64; 3]; 3], m: usize, b: &[f64]) -> Option<[f64; 3]> {
 struct Dof {
     k: usize,
     e: (f64, f64),
+    stick: bool,
 }
 
 pub(super) struct Solver<'p, 'a> {
@@ -96,6 +97,9 @@ pub(super) struct Solver<'p, 'a> {
     k0: [f64; 3],
     rho: f64,
     products: usize,
+    /// The Fourier preconditioner of the stick block (None: Jacobi); it shares the
+    /// operator's scratch, which is at least as large.
+    prec: Option<TensorConvolution>,
     // Work fields.
     wx: Vec<f64>,
     wy: Vec<f64>,
@@ -144,6 +148,7 @@ impl<'p, 'a> Solver<'p, 'a> {
             k0,
             rho: 2.0 / (k0[0] + k0[2]),
             products: 0,
+            prec: TensorConvolution::inverse_symbol(g, &p.compliance(), k0[0]).ok(),
             wx: vec![0.0; n],
             wy: vec![0.0; n],
             vx: vec![0.0; n],
@@ -387,8 +392,9 @@ impl<'p, 'a> Solver<'p, 'a> {
             for k in 0..n {
                 let w = self.rigid(&mv, k);
                 let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+                let st = stick[k];
                 let mut push = |e: (f64, f64), d: f64| {
-                    dofs.push(Dof { k, e });
+                    dofs.push(Dof { k, e, stick: st });
                     diag_d.push(d);
                     rhs.push(e.0 * s.0 + e.1 * s.1);
                 };
@@ -658,13 +664,43 @@ impl<'p, 'a> Solver<'p, 'a> {
         self.vy = vy;
     }
 
-    /// Jacobi-preconditioned projected CG for
+    /// $z = G^{-1} r$: the Fourier preconditioner on the stick components (when planned) and
+    /// Jacobi on the rest, or Jacobi throughout.
+    fn g_apply(&mut self, dofs: &[Dof], first: &[usize], minv: &[f64], r: &[f64], z: &mut [f64]) {
+        let Some(op) = &self.prec else {
+            z.par_iter_mut().zip(minv.par_iter().zip(r.par_iter())).for_each(|(z, (m, r))| {
+                *z = m * r;
+            });
+            return;
+        };
+        let (px, py, vx, vy) = (&mut self.wx, &mut self.wy, &mut self.vx, &mut self.vy);
+        px.par_iter_mut().zip(py.par_iter_mut()).enumerate().for_each(|(k, (a, b))| {
+            let (mut sa, mut sb) = (0.0, 0.0);
+            for i in first[k]..first[k + 1] {
+                if dofs[i].stick {
+                    sa += r[i] * dofs[i].e.0;
+                    sb += r[i] * dofs[i].e.1;
+                }
+            }
+            *a = sa;
+            *b = sb;
+        });
+        op.apply(px, py, vx, vy, self.scratch);
+        let (vx, vy) = (&*vx, &*vy);
+        z.par_iter_mut().zip(dofs.par_iter()).zip(minv.par_iter().zip(r.par_iter())).for_each(
+            |((z, d), (m, r))| {
+                *z = if d.stick { d.e.0 * vx[d.k] + d.e.1 * vy[d.k] } else { m * r };
+            },
+        );
+    }
+
+    /// Preconditioned projected CG for
     /// $Hx - B^{\mathsf T}\lambda = \text{rhs},\ Bx = b$ (Gould, Hribar & Nocedal 2001,
-    /// Algorithm II with the constraint preconditioner $\mathrm{diag}(H)$). Stops when the
-    /// projected preconditioned residual falls below `eta` times its start or below
-    /// `abs_floor` (traction units). Returns $x$, $\lambda$ (the rigid-mode increments) and
-    /// the iteration count.
-    #[allow(clippy::too_many_arguments)]
+    /// Algorithm II with a constraint preconditioner $G$: $\mathrm{diag}(H)$, or the Fourier
+    /// preconditioner on the stick block). Stops when the projected preconditioned residual
+    /// falls below `eta` times its start or below `abs_floor` (traction units). Returns $x$,
+    /// $\lambda$ (the rigid-mode increments) and the iteration count.
+    #[allow(clippy::too_many_arguments, clippy::needless_range_loop)]
     fn pcg(
         &mut self,
         dofs: &[Dof],
@@ -685,27 +721,46 @@ impl<'p, 'a> Solver<'p, 'a> {
         for k in 0..self.n {
             first[k + 1] += first[k];
         }
-        // Constraint rows B_jd = m_j(x_k) . e_d per dof and the preconditioner M = diag(H).
-        let modes = &self.modes;
+        let modes = self.modes.clone();
+        // Constraint row j at dof d: B_jd = m_j(x_k) . e_d.
+        let brow = |d: &Dof| -> [f64; 3] {
+            let mut row = [0.0; 3];
+            for (j, m) in modes.iter().enumerate() {
+                let v = m.at(g.x[d.k], g.y[d.k]);
+                row[j] = v.0 * d.e.0 + v.1 * d.e.1;
+            }
+            row
+        };
         let k0 = self.k0;
-        let (bm, minv): (Vec<[f64; 3]>, Vec<f64>) = dofs
+        let minv: Vec<f64> = dofs
             .par_iter()
             .zip(diag_d.par_iter())
             .map(|(d, dd)| {
-                let mut row = [0.0; 3];
-                for (j, m) in modes.iter().enumerate() {
-                    let v = m.at(g.x[d.k], g.y[d.k]);
-                    row[j] = v.0 * d.e.0 + v.1 * d.e.1;
-                }
                 let kd = d.e.0 * (k0[0] * d.e.0 + k0[1] * d.e.1)
                     + d.e.1 * (k0[1] * d.e.0 + k0[2] * d.e.1);
-                (row, 1.0 / (kd + dd))
+                1.0 / (kd + dd)
             })
-            .unzip();
+            .collect();
+        // G^-1 b_j and W = B G^-1 B^T.
+        let mut gb: Vec<Vec<f64>> = Vec::with_capacity(nm);
+        for j in 0..nm {
+            let bj: Vec<f64> = dofs.par_iter().map(|d| brow(d)[j]).collect();
+            let mut y = vec![0.0; nd];
+            self.g_apply(dofs, &first, &minv, &bj, &mut y);
+            gb.push(y);
+        }
         let mut w = [[0.0; 3]; 3];
         for i in 0..nm {
             for j in 0..nm {
-                w[i][j] = bm.par_iter().zip(minv.par_iter()).map(|(r, m)| r[i] * m * r[j]).sum();
+                w[i][j] = dofs.par_iter().zip(gb[j].par_iter()).map(|(d, y)| brow(d)[i] * y).sum();
+            }
+        }
+        // Symmetrise (G^-1 is symmetric up to rounding).
+        for i in 0..nm {
+            for j in 0..i {
+                let v = 0.5 * (w[i][j] + w[j][i]);
+                w[i][j] = v;
+                w[j][i] = v;
             }
         }
         let no_stick = || Error::NoStickLeft {
@@ -717,44 +772,55 @@ impl<'p, 'a> Solver<'p, 'a> {
         if small_spd_solve(&w, nm, &[1.0; 3][..nm]).is_none() {
             return Err(no_stick());
         }
-        // c = B M^-1 r.
-        let bmr = |r: &[f64]| -> [f64; 3] {
-            r.par_iter()
-                .zip(bm.par_iter().zip(minv.par_iter()))
-                .map(|(rv, (row, m))| {
-                    let t = m * rv;
-                    [row[0] * t, row[1] * t, row[2] * t]
-                })
-                .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]])
-        };
-        // z = M^-1 (r - B^T l), l = W^-1 B M^-1 r. The residual itself is replaced by
-        // r - B^T l (the "residual update" of Gould, Hribar & Nocedal, §6): it leaves the
-        // iteration unchanged in exact arithmetic and keeps r small, so that z stays in the
-        // null space of B to rounding; the l are summed into the multiplier. Returns
+        // Projection: y = G^-1 r, l = W^-1 B y, r <- r - B^T l, z = y - G^-1 B^T l. The
+        // residual itself is replaced by r - B^T l (the "residual update" of Gould, Hribar &
+        // Nocedal, §6): it leaves the iteration unchanged in exact arithmetic and keeps z in
+        // the null space of B to rounding; the l are summed into the multiplier. Returns
         // (r.z, |z|^2).
-        let project = |r: &mut [f64], z: &mut [f64], c: [f64; 3], acc: &mut [f64; 3]| {
+        let mut y = vec![0.0; nd];
+        let mut project = |this: &mut Self,
+                           r: &mut [f64],
+                           z: &mut [f64],
+                           acc: &mut [f64; 3]|
+         -> Option<(f64, f64)> {
+            this.g_apply(dofs, &first, &minv, r, &mut y);
+            let c = dofs
+                .par_iter()
+                .zip(y.par_iter())
+                .map(|(d, yv)| {
+                    let row = brow(d);
+                    [row[0] * yv, row[1] * yv, row[2] * yv]
+                })
+                .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]]);
             let l = small_spd_solve(&w, nm, &c[..nm])?;
             for j in 0..nm {
                 acc[j] += l[j];
             }
+            let gbr = &gb;
+            let yr = &y;
             let (rz, zz) = r
                 .par_iter_mut()
                 .zip(z.par_iter_mut())
-                .zip(bm.par_iter().zip(minv.par_iter()))
-                .map(|((rv, zv), (row, m))| {
+                .zip(dofs.par_iter())
+                .enumerate()
+                .map(|(i, ((rv, zv), d))| {
+                    let row = brow(d);
                     *rv -= row[0] * l[0] + row[1] * l[1] + row[2] * l[2];
-                    *zv = m * *rv;
-                    (*rv * *zv, *zv * *zv)
+                    let mut zi = yr[i];
+                    for (j, gj) in gbr.iter().enumerate() {
+                        zi -= l[j] * gj[i];
+                    }
+                    *zv = zi;
+                    (*rv * zi, zi * zi)
                 })
                 .reduce(|| (0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
             Some((rz, zz))
         };
-        // x0 = M^-1 B^T W^-1 b.
+        // x0 = G^-1 B^T W^-1 b.
         let l0 = small_spd_solve(&w, nm, b).ok_or_else(no_stick)?;
-        let mut x: Vec<f64> = bm
-            .par_iter()
-            .zip(minv.par_iter())
-            .map(|(row, m)| m * (row[0] * l0[0] + row[1] * l0[1] + row[2] * l0[2]))
+        let mut x: Vec<f64> = (0..nd)
+            .into_par_iter()
+            .map(|i| gb.iter().zip(&l0).map(|(gj, l)| l * gj[i]).sum())
             .collect();
         let mut hx = vec![0.0; nd];
         self.h_apply(dofs, &first, diag_d, &x, &mut hx);
@@ -762,8 +828,7 @@ impl<'p, 'a> Solver<'p, 'a> {
         drop(hx);
         let mut z = vec![0.0; nd];
         let mut acc = [0.0; 3];
-        let c0 = bmr(&r);
-        let (mut rz, zz) = project(&mut r, &mut z, c0, &mut acc).ok_or_else(no_stick)?;
+        let (mut rz, zz) = project(self, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
         let stop = (eta * zz.sqrt()).max(abs_floor);
         let mut znorm = zz.sqrt();
         let mut p = z.clone();
@@ -776,29 +841,21 @@ impl<'p, 'a> Solver<'p, 'a> {
                 return Err(Error::NotPositiveDefinite { index: its });
             }
             let alpha = rz / php;
-            // x += alpha p, r -= alpha Hp, and c = B M^-1 r in the same pass.
-            let c = x
-                .par_iter_mut()
-                .zip(r.par_iter_mut())
-                .zip(p.par_iter().zip(hp.par_iter()))
-                .zip(bm.par_iter().zip(minv.par_iter()))
-                .map(|(((xv, rv), (pv, hv)), (row, m))| {
+            x.par_iter_mut().zip(r.par_iter_mut()).zip(p.par_iter().zip(hp.par_iter())).for_each(
+                |((xv, rv), (pv, hv))| {
                     *xv += alpha * pv;
                     *rv -= alpha * hv;
-                    let t = m * *rv;
-                    [row[0] * t, row[1] * t, row[2] * t]
-                })
-                .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]]);
-            let (rz_new, zz) = project(&mut r, &mut z, c, &mut acc).ok_or_else(no_stick)?;
+                },
+            );
+            let (rz_new, zz) = project(self, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
             let beta = rz_new / rz;
             rz = rz_new;
             znorm = zz.sqrt();
             p.par_iter_mut().zip(z.par_iter()).for_each(|(pv, zv)| *pv = zv + beta * *pv);
             its += 1;
         }
-        // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc), r now M^-1-orthogonal to B.
-        let c1 = bmr(&r);
-        project(&mut r, &mut z, c1, &mut acc).ok_or_else(no_stick)?;
+        // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc), r now G^-1-orthogonal to B.
+        project(self, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
         let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
         Ok((x, lam, its))
     }

@@ -303,7 +303,8 @@ impl TensorConvolution {
         let ms = my + 8;
         let nc = rows.len();
         let z = C64::new(0.0, 0.0);
-        let mut outs: Vec<_> = cols.iter_mut().map(|c| c.par_chunks_mut(BLOCK * ny)).collect();
+        let mut outs: Vec<_> =
+            cols.iter_mut().map(|c| c[..mxh * ny].par_chunks_mut(BLOCK * ny)).collect();
         let work = |(buf, scr): &mut (Vec<C64>, Vec<C64>), ib: usize, out: &mut [&mut [C64]]| {
             let i0 = ib * BLOCK;
             let nb = out[0].len() / ny;
@@ -457,6 +458,65 @@ impl TensorConvolution {
             let lat: &[f64] = &s.lat[f];
             u.par_iter_mut().zip(self.cell.par_iter()).for_each(|(o, &c)| *o = lat[c]);
         }
+    }
+}
+
+impl TensorConvolution {
+    /// A preconditioner for the tangential operator of `grid`: the inverse of the half-space's
+    /// tangential transfer, $\hat{\mathbf u} = |\mathbf k|^{-1}\,(aI - b\,\hat{\mathbf k}
+    /// \hat{\mathbf k}^{\mathsf T})\,\hat{\mathbf q}$ with $a = \sum 1/G_i$, $b = \sum\nu_i/G_i$
+    /// (the Fourier transform of Cerruti's solution), on the periodic lattice of the grid's
+    /// bounding box (5-smooth size, no padding), with the discrete wave number
+    /// $2\sin(kh/2)/h$ per axis; the mean mode gets the smallest non-zero wave number, and
+    /// the whole is scaled so that its diagonal equals $1/K_{xx}(0)$ (the Jacobi value).
+    pub(crate) fn inverse_symbol(grid: &ContactGrid, c: &Compliance, k0xx: f64) -> Result<Self> {
+        let (nx, ny, _, _, cell) = grid.lattice_cells()?;
+        let (mx, my) = (fast_size(nx), fast_size(ny));
+        let mut op = Self::scalar_plan(nx, ny, mx, my);
+        op.n = cell.len();
+        let (row_items, row_ptr) = rows_of(&cell, nx, ny);
+        op.cell = cell;
+        op.row_items = row_items;
+        op.row_ptr = row_ptr;
+        let a = c.one_minus_nu + c.nu;
+        let b = c.nu;
+        let gamma = 1.0 / (a - b) - 1.0 / a;
+        let (hx, hy) = (grid.hx, grid.hy);
+        let two_pi = 2.0 * std::f64::consts::PI;
+        let kmin = (two_pi / (mx as f64 * hx)).min(two_pi / (my as f64 * hy));
+        let sym = |i: usize, j: usize| -> [f64; 3] {
+            let ii = if 2 * i <= mx { i as f64 } else { i as f64 - mx as f64 };
+            let jj = if 2 * j <= my { j as f64 } else { j as f64 - my as f64 };
+            let kx = 2.0 * (0.5 * two_pi * ii / mx as f64).sin() / hx;
+            let ky = 2.0 * (0.5 * two_pi * jj / my as f64).sin() / hy;
+            let k = kx.hypot(ky);
+            if k == 0.0 {
+                return [kmin / a, 0.0, kmin / a];
+            }
+            let (ex, ey) = (kx / k, ky / k);
+            [k * (1.0 / a + gamma * ex * ex), k * gamma * ex * ey, k * (1.0 / a + gamma * ey * ey)]
+        };
+        let mut mean = 0.0;
+        for i in 0..mx {
+            for j in 0..my {
+                mean += sym(i, j)[0];
+            }
+        }
+        mean /= (mx * my) as f64;
+        let scale = 1.0 / (k0xx * mean);
+        let (mxh, mut kxx, mut kxy, mut kyy) = (op.mxh, vec![], vec![], vec![]);
+        for i in 0..mxh {
+            for j in 0..my {
+                let v = sym(i, j);
+                kxx.push(scale * v[0]);
+                kxy.push(scale * v[1]);
+                kyy.push(scale * v[2]);
+            }
+        }
+        op.kxx = kxx;
+        op.kxy = kxy;
+        op.kyy = kyy;
+        Ok(op)
     }
 }
 
