@@ -9,9 +9,12 @@
 //! - The criterion benches in `benches/` measure time by problem size and print the accuracy
 //!   each setting buys beside it, because a fast wrong answer is not a result
 //!   (`cargo bench -p stickslip-benches`).
+//! - [`fast_sweep`]: the fast solver's robustness sweep (issue 20), run by
+//!   `tests/stability_fast.rs` in CI and by the example `fast_large` at 512 and 1024 across.
 //! - The hard-case stability suite is `tests/stability.rs`; its case list is
 //!   `docs/hard-cases.md`.
 
 pub mod accuracy;
 pub mod data;
+pub mod fast_sweep;
 pub mod process;
