@@ -1,0 +1,122 @@
+//! The single-integral Hertz field (`hertz::ellipse_field`, Love's potential in the
+//! ellipsoidal coordinate): a = b without shear against the sphere's closed form (Huber 1904;
+//! Hamilton 1983), the sliding sphere against the 2D Cerruti quadrature and the trailing-edge
+//! closed form.
+#![allow(clippy::needless_range_loop)]
+mod common;
+use common::{tol, ErrStats};
+use stickslip_halfspace::hertz::ellipse_field::HertzLoadField;
+use stickslip_halfspace::hertz::sphere_field::{
+    hertz_sphere_stress, sliding_sphere_stress, sliding_trailing_edge_tension,
+};
+use stickslip_halfspace::Stress3;
+
+const NU: f64 = 0.3;
+
+fn comps(s: &Stress3) -> [f64; 6] {
+    [s.xx, s.yy, s.zz, s.xy, s.xz, s.yz]
+}
+
+/// Points on and off the contact, near the edge r = a, near the surface and deep.
+fn points() -> Vec<(f64, f64, f64)> {
+    let mut v = Vec::new();
+    for &z in &[1e-4, 0.01, 0.1, 0.48, 1.0, 3.0] {
+        for &(x, y) in &[
+            (0.0, 0.0),
+            (0.3, -0.2),
+            (-0.999, 0.0),
+            (1.001, 0.0),
+            (0.6, 0.8),
+            (-1.2, 0.7),
+            (2.5, -1.5),
+            // near the axis, but not so near that the closed form's 1/r^2 cancellation
+            // (about 1e-16 a^2/r^2) exceeds the tolerance
+            (0.01, 0.0),
+        ] {
+            v.push((x, y, z));
+        }
+    }
+    v
+}
+
+#[test]
+fn circle_without_shear_is_the_sphere_closed_form() {
+    let (a, p0) = (2.0, 3.0);
+    let field = HertzLoadField::new(a, a, p0, 0.0, NU).unwrap();
+    let mut st = ErrStats::new("Hertz s-integral (a = b, f = 0) vs sphere closed form");
+    for (x, y, z) in points() {
+        let (x, y, z) = (a * x, a * y, a * z);
+        let got = field.stress(x, y, z).unwrap();
+        let want = hertz_sphere_stress(a, p0, NU, x, y, z);
+        let (g, w) = (comps(&got.stress), comps(&want));
+        for k in 0..6 {
+            st.add(g[k], w[k], p0, &format!("({x}, {y}, {z}) comp {k}"));
+        }
+    }
+    st.check(tol::ELLIPSE_FIELD_VS_CLOSED);
+}
+
+#[test]
+fn sliding_sphere_matches_the_cerruti_quadrature() {
+    let (a, p0) = (1.0, 1.0);
+    let mut st = ErrStats::new("sliding sphere s-integral vs Cerruti quadrature");
+    for f in [0.25, 0.5] {
+        let field = HertzLoadField::new(a, a, p0, f, NU).unwrap();
+        for &(x, y, z) in &[
+            (0.2, -0.3, 0.4),
+            (-0.9, 0.1, 0.2),
+            (1.3, 0.4, 0.6),
+            (-1.0, 0.0, 0.01),
+            (0.99, 0.05, 0.02),
+            (0.0, 0.0, 0.3),
+            (0.4, 0.5, 2.0),
+            (-2.0, -1.0, 0.1),
+        ] {
+            let got = field.stress(x, y, z).unwrap();
+            let want = sliding_sphere_stress(a, p0, f, NU, (x, y, z), 1e-11).unwrap();
+            let (g, w) = (comps(&got.stress), comps(&want.stress));
+            for k in 0..6 {
+                st.add(g[k], w[k], p0, &format!("f = {f} ({x}, {y}, {z}) comp {k}"));
+            }
+        }
+    }
+    st.check(tol::SLIDING_FIELD_VS_QUAD);
+}
+
+#[test]
+fn sliding_sphere_trailing_edge_and_surface_traction() {
+    let (a, p0) = (1.0, 1.0);
+    for f in [0.25, 0.5] {
+        let field = HertzLoadField::new(a, a, p0, f, NU).unwrap();
+        // sigma_xx(-a, 0, z) = T + c sqrt(z/a) + O(z): 1e-8 a below the edge it is within
+        // 1e-3, and eliminating the sqrt term from z and 4z leaves O(z).
+        let s1 = field.stress(-a, 0.0, 1e-8).unwrap();
+        let s4 = field.stress(-a, 0.0, 4e-8).unwrap();
+        let want = sliding_trailing_edge_tension(p0, NU, f);
+        let t = s1.stress.xx;
+        assert!((t - want).abs() < 1e-3 * want, "f = {f}: {t} vs {want}");
+        let extrapolated = 2.0 * s1.stress.xx - s4.stress.xx;
+        assert!((extrapolated - want).abs() < 1e-6 * want, "f = {f}: {extrapolated} vs {want}");
+        assert!(s1.evals < 20_000, "{} evaluations", s1.evals);
+        // inside the contact the surface traction is recovered: sigma_xz -> -f p, szz -> -p
+        let (x, y) = (0.3, 0.2);
+        let s = field.stress(x, y, 1e-7).unwrap().stress;
+        let p = (1.0f64 - x * x - y * y).sqrt();
+        assert!((s.xz + f * p).abs() < tol::SLIDING_SURFACE, "{s:?}");
+        assert!((s.zz + p).abs() < tol::SLIDING_SURFACE, "{s:?}");
+        println!(
+            "f = {f}: sigma_xx(-a, 0, 1e-8 a) = {t:.6} p0, extrapolated to z = 0 {extrapolated:.9} \
+             p0, closed form {want:.9} p0 ({} integrand evaluations)",
+            s1.evals
+        );
+    }
+}
+
+#[test]
+fn bad_input_is_refused() {
+    assert!(HertzLoadField::new(0.0, 1.0, 1.0, 0.0, NU).is_err());
+    assert!(HertzLoadField::new(1.0, 1.0, 1.0, 0.0, 0.6).is_err());
+    let f = HertzLoadField::new(1.0, 2.0, 1.0, 0.1, NU).unwrap();
+    assert!(f.stress(0.0, 0.0, 0.0).is_err());
+    assert!(f.stress(f64::NAN, 0.0, 1.0).is_err());
+}
