@@ -120,3 +120,68 @@ fn bad_input_is_refused() {
     assert!(f.stress(0.0, 0.0, 0.0).is_err());
     assert!(f.stress(f64::NAN, 0.0, 1.0).is_err());
 }
+
+/// Boussinesq (normal) and Cerruti (shear along +x) point-force stresses integrated over the
+/// elliptic Hertz density: (xi, eta) = (a sin u cos th, b sin u sin th), density cos u,
+/// dA = a b sin u cos u du dth, split at the field point's elliptic angle and radius.
+fn ellipse_quad(a: f64, b: f64, f: f64, (x, y, z): (f64, f64, f64), k: usize) -> f64 {
+    use common::quad::gk;
+    use std::f64::consts::PI;
+    use stickslip_halfspace::point_load::{boussinesq_stress, cerruti_stress};
+    let th0 = (y / b).atan2(x / a).rem_euclid(2.0 * PI);
+    let rr = (x / a).hypot(y / b);
+    let u0 = if rr < 1.0 { rr.asin() } else { 0.5 * PI };
+    gk(
+        |th| {
+            let (s, c) = th.sin_cos();
+            gk(
+                |u| {
+                    let (su, cu) = u.sin_cos();
+                    let (xi, eta) = (a * su * c, b * su * s);
+                    let w = cu * a * b * su * cu;
+                    let n = comps(&boussinesq_stress(NU, 1.0, x - xi, y - eta, z))[k];
+                    let t = if f == 0.0 {
+                        0.0
+                    } else {
+                        comps(&cerruti_stress(NU, 1.0, x - xi, y - eta, z))[k]
+                    };
+                    w * (n + f * t)
+                },
+                0.0,
+                0.5 * PI,
+                &[u0],
+                1e-12,
+                1e-14,
+            )
+        },
+        0.0,
+        2.0 * PI,
+        &[th0],
+        1e-12,
+        1e-13,
+    )
+}
+
+#[test]
+fn ellipse_matches_point_force_quadrature() {
+    let (a, b, p0) = (1.0, 0.4, 1.0);
+    let mut st = ErrStats::new("Hertz ellipse s-integral vs Boussinesq + Cerruti quadrature");
+    for f in [0.0, 0.3] {
+        let field = HertzLoadField::new(a, b, p0, f, NU).unwrap();
+        for &(x, y, z) in &[
+            (0.0, 0.0, 0.2),
+            (0.0, 0.0, 0.8),
+            (0.5, 0.2, 0.3),
+            (-0.9, 0.1, 0.15),
+            (1.4, -0.5, 0.5),
+            (0.2, 0.6, 0.25),
+        ] {
+            let got = comps(&field.stress(x, y, z).unwrap().stress);
+            for k in 0..6 {
+                let want = ellipse_quad(a, b, f, (x, y, z), k);
+                st.add(got[k], want, p0, &format!("f = {f} ({x}, {y}, {z}) comp {k}"));
+            }
+        }
+    }
+    st.check(tol::HERTZ_FIELD_QUAD);
+}
