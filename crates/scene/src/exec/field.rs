@@ -6,6 +6,7 @@ use stickslip_graded::StressField;
 use stickslip_halfspace::mcewen::HertzTraction;
 use stickslip_halfspace::Stress2;
 
+use stickslip_halfspace::hertz::ellipse_field::HertzLoadField;
 use stickslip_halfspace::hertz::sphere_field::hertz_sphere_stress;
 use stickslip_halfspace::Stress3;
 use stickslip_traction::field::{
@@ -119,6 +120,43 @@ pub(crate) fn contact(
             }
             "Hertz sphere field in closed form".to_string()
         }
+        ContactFieldMethod::HertzSliding { friction, angle } => {
+            // Hamilton's field has the shear along +x: work in axes turned by `angle`.
+            let load = HertzLoadField::new(n.ax, n.ax, n.p0, friction, f.nu)
+                .map_err(|e| solver_err("sliding sphere field", e))?;
+            let (c, s) = (angle.cos(), angle.sin());
+            for (k, &z) in zs.iter().enumerate() {
+                for &y in &ys {
+                    for &x in &xs {
+                        let local = load
+                            .stress(c * x + s * y, -s * x + c * y, z)
+                            .map_err(|e| solver_err("sliding sphere field", e))?;
+                        stresses.push(rotate_xy(&local.stress, c, s));
+                    }
+                }
+                cx.progress("subsurface field", k + 1, nz);
+            }
+            format!(
+                "sliding Hertz sphere (f = {friction}, shear at {:.1} deg) by Hamilton's field as one integral per point",
+                angle.to_degrees()
+            )
+        }
+        ContactFieldMethod::HertzEllipse => {
+            let load = HertzLoadField::new(n.ax, n.ay, n.p0, 0.0, f.nu)
+                .map_err(|e| solver_err("Hertz ellipse field", e))?;
+            for (k, &z) in zs.iter().enumerate() {
+                for &y in &ys {
+                    for &x in &xs {
+                        let st = load
+                            .stress(x, y, z)
+                            .map_err(|e| solver_err("Hertz ellipse field", e))?;
+                        stresses.push(st.stress);
+                    }
+                }
+                cx.progress("subsurface field", k + 1, nz);
+            }
+            "Hertz ellipse field as one integral per point (Love's potential)".to_string()
+        }
         ContactFieldMethod::Lattice => {
             let (fl, p, qx, qy) = extended_lattice(lat, &xs, &ys)?;
             let t = SurfaceTraction { p: &p, qx: &qx, qy: &qy };
@@ -179,6 +217,19 @@ pub(crate) fn contact(
         values: (total <= INLINE_FIELD_POINTS).then(|| a.clone()),
         arrays: a,
     })
+}
+
+/// A stress given in axes turned by the angle of cosine `c` and sine `s` about z, in the
+/// scene's axes: $\sigma = R\sigma'R^T$ with the columns of $R$ the turned axes.
+fn rotate_xy(l: &Stress3, c: f64, s: f64) -> Stress3 {
+    Stress3 {
+        xx: c * c * l.xx - 2.0 * c * s * l.xy + s * s * l.yy,
+        yy: s * s * l.xx + 2.0 * c * s * l.xy + c * c * l.yy,
+        xy: c * s * (l.xx - l.yy) + (c * c - s * s) * l.xy,
+        zz: l.zz,
+        xz: c * l.xz - s * l.yz,
+        yz: s * l.xz + c * l.yz,
+    }
 }
 
 /// The contact lattice extended with unloaded cells of the same size so that every box
