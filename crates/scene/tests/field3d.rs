@@ -224,3 +224,48 @@ fn the_frictionless_ellipse_uses_its_field_and_the_lattice_agrees_within_1_perce
     assert!(deep < 0.01, "{deep}");
     assert!(closed.audit.passed);
 }
+
+#[test]
+fn box_ends_may_be_lengths_with_units_when_the_scale_is_metres() {
+    let numbers = go(
+        "",
+        "{ x = [-0.0003, 0.0003, 7], y = [0, 0, 1], z = [0.00002, 0.0004, 5], scale = \"m\" }",
+        "grid = 16",
+    )
+    .unwrap();
+    let units = go(
+        "",
+        "{ x = [\"-0.3 mm\", \"300 um\", 7], y = [0, 0, 1], z = [\"20 um\", \"0.4 mm\", 5], scale = \"m\" }",
+        "grid = 16",
+    )
+    .unwrap();
+    let (n, u) = (numbers.field.volume().unwrap(), units.field.volume().unwrap());
+    for (p, q) in n.x.iter().zip(&u.x).chain(n.z.iter().zip(&u.z)) {
+        assert!((p - q).abs() <= 1e-15 * p.abs().max(1e-6), "{p} vs {q}");
+    }
+    assert_eq!(n.values.as_ref().unwrap().szz.len(), u.values.as_ref().unwrap().szz.len());
+    // a unit in multiples of a, a count with a unit, a unit that is not a length
+    let cases = [
+        (
+            "{ x = [\"-1 mm\", 1, 11], y = [0, 0, 1], z = [0.1, 1.0, 5], scale = \"a\" }",
+            "outputs.field.x",
+            ErrorKind::Unit,
+        ),
+        (
+            "{ x = [-1, 1, \"11\"], y = [0, 0, 1], z = [0.1, 1.0, 5] }",
+            "outputs.field.x",
+            ErrorKind::OutOfRange,
+        ),
+        (
+            "{ x = [-0.001, 0.001, 11], y = [0, 0, 1], z = [\"0.1 N\", \"1 mm\", 5], scale = \"m\" }",
+            "outputs.field.z",
+            ErrorKind::Unit,
+        ),
+    ];
+    for (field, key, kind) in cases {
+        let e = go("", field, "grid = 16").unwrap_err();
+        assert_eq!(e.key.as_deref(), Some(key), "{field}: {e}");
+        assert_eq!(e.kind, kind, "{field}: {e}");
+        assert!(e.position.is_some() && e.hint.is_some(), "{field}: {e}");
+    }
+}
