@@ -185,3 +185,23 @@ fn ellipse_matches_point_force_quadrature() {
     }
     st.check(tol::HERTZ_FIELD_QUAD);
 }
+
+/// On the axis of the ellipse, Boussinesq's sigma_z integrated over the Hertz pressure
+/// (first in the radius of the elliptic polar coordinates, then over the angle with
+/// int dth / (A cos^2 + B sin^2) = 2 pi / sqrt(A B)) is
+/// sigma_z = -p0 a b / sqrt((a^2 + z^2)(b^2 + z^2)); a = b gives Johnson eq. 3.45.
+#[test]
+fn ellipse_sigma_z_on_the_axis() {
+    let p0 = 1.0;
+    let mut st =
+        ErrStats::new("Hertz ellipse sigma_z on the axis vs -p0 ab / sqrt((a2+z2)(b2+z2))");
+    for &(a, b) in &[(1.0, 1.0), (1.0, 0.5), (1.0, 0.125), (0.3, 2.0)] {
+        let field = HertzLoadField::new(a, b, p0, 0.0, NU).unwrap();
+        for &z in &[1e-6, 1e-3, 0.05, 0.3, 1.0, 4.0, 20.0] {
+            let got = field.stress(0.0, 0.0, z).unwrap().stress.zz;
+            let want = -p0 * a * b / ((a * a + z * z) * (b * b + z * z)).sqrt();
+            st.add(got, want, p0, &format!("a = {a}, b = {b}, z = {z}"));
+        }
+    }
+    st.check(tol::ELLIPSE_FIELD_VS_CLOSED);
+}
