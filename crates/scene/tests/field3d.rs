@@ -269,3 +269,47 @@ fn box_ends_may_be_lengths_with_units_when_the_scale_is_metres() {
         assert!(e.position.is_some() && e.hint.is_some(), "{field}: {e}");
     }
 }
+
+#[test]
+fn a_sliding_ellipse_at_30_degrees_superposes_two_shears_and_the_lattice_agrees() {
+    // b/a = 0.5, shear f p at 30 degrees: the x-shear on the ellipse plus the y-shear as the
+    // x-shear of the swapped ellipse turned by 90 degrees. An off-axis section (y = 0.3 a)
+    // so that every component is non-zero.
+    let src = |solver: &str| {
+        format!(
+            "[geometry]\nkind = \"ellipsoid\"\nsemi_axes = [\"2 mm\", \"1 mm\"]\n[substrate]\nmodel = \"homogeneous\"\ne = \"210 GPa\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nnormal = \"500 N\"\nsliding = true\nfriction = 0.3\ndirection_deg = 30\n[outputs]\nfield = {{ x = [-1.5, 1.5, 31], y = [0.3, 0.3, 1], z = [0.02, 1.5, 16], scale = \"a\" }}\n[solver]\n{solver}\n"
+        )
+    };
+    let run_it = |solver: &str| {
+        run(
+            &Scene::from_toml_str(&src(solver), Some("s.toml".into())).unwrap(),
+            &RunOptions::default(),
+        )
+        .unwrap()
+    };
+    let closed = run_it("grid = 32");
+    let v = closed.field.volume().unwrap();
+    assert!(v.method.contains("sliding Hertz ellipse"), "{}", v.method);
+    let lattice = run_it("grid = 128\nmethod = \"fast\"");
+    let (all, peak) = field_gap(&closed, &lattice, 0.0);
+    let (deep, _) = field_gap(&closed, &lattice, 0.1);
+    println!(
+        "sliding ellipse b/a = 0.5, f = 0.3 at 30 deg: lattice (128 across) vs the superposed field, max |diff| {all:.2e} p0 on the section y = 0.3 a, {deep:.2e} p0 below z = 0.1 a, tensile peak {peak:.2e} p0"
+    );
+    assert!(deep < 0.01 && peak < 0.01, "{deep} {peak}");
+}
+
+#[test]
+fn a_sphere_sliding_at_30_degrees_turns_hamiltons_field() {
+    let section = "{ x = [-1.5, 1.5, 31], y = [0.3, 0.3, 1], z = [0.02, 1.5, 16], scale = \"a\" }";
+    let load = "sliding = true\nfriction = 0.5\ndirection_deg = 30";
+    let closed = go(load, section, "grid = 32").unwrap();
+    assert!(closed.field.volume().unwrap().method.contains("sliding Hertz sphere"));
+    let lattice = go(load, section, "grid = 128\nmethod = \"fast\"").unwrap();
+    let (all, peak) = field_gap(&closed, &lattice, 0.0);
+    let (deep, _) = field_gap(&closed, &lattice, 0.1);
+    println!(
+        "sliding sphere f = 0.5 at 30 deg: lattice (128 across) vs Hamilton turned, max |diff| {all:.2e} p0 on y = 0.3 a, {deep:.2e} p0 below z = 0.1 a, tensile peak {peak:.2e} p0"
+    );
+    assert!(deep < 0.01 && peak < 0.01, "{deep} {peak}");
+}

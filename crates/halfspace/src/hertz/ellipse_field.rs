@@ -37,6 +37,7 @@ pub struct HertzLoadField {
     p0: f64,
     f: f64,
     nu: f64,
+    pressure: bool,
     hi: GaussLegendre,
     lo: GaussLegendre,
 }
@@ -60,7 +61,15 @@ impl HertzLoadField {
             GaussLegendre::new(n)
                 .map_err(|e| Error::Quadrature { what: "Hertz field rule", message: e.to_string() })
         };
-        Ok(Self { a, b, p0, f, nu, hi: rule(20)?, lo: rule(10)? })
+        Ok(Self { a, b, p0, f, nu, pressure: true, hi: rule(20)?, lo: rule(10)? })
+    }
+
+    /// The shear $fp$ alone, without the pressure (for superposing shears in other
+    /// directions).
+    #[must_use]
+    pub fn without_pressure(mut self) -> Self {
+        self.pressure = false;
+        self
     }
 
     /// Stress at $(x, y, z)$, $z > 0$ (module documentation for the method), with the
@@ -79,7 +88,7 @@ impl HertzLoadField {
         // Work in units of a: the generated terms are homogeneous.
         let (x, y, z, bb) = (x / a, y / a, z / a, b / a);
         let lam = ellipsoidal_coordinate(x, y, z, bb);
-        let q = self.f;
+        let (q, pressure) = (self.f, self.pressure);
         // Integrand at s = lam + d, with W^2 = z^2 + d kappa(s) (no cancellation of d against
         // lam: the near-surface features have width ~ z^2, far below lam outside the contact).
         let (a2, b2) = (1.0, bb * bb);
@@ -88,7 +97,7 @@ impl HertzLoadField {
             let kappa =
                 1.0 - x * x * a2 / ((a2 + s) * (a2 + lam)) - y * y * b2 / ((b2 + s) * (b2 + lam));
             let w = (z * z + d * kappa).max(0.0).sqrt();
-            let n = normal_integrand(s, w, x, y, z, 1.0, bb, nu);
+            let n = if pressure { normal_integrand(s, w, x, y, z, 1.0, bb, nu) } else { [0.0; 6] };
             if q == 0.0 {
                 return n;
             }
@@ -115,7 +124,7 @@ impl HertzLoadField {
         let (far, e_far, n_far) = self.adaptive(&far_f, &[0.0, 0.5, 1.0])?;
         let val: [f64; 6] = std::array::from_fn(|k| near[k] + far[k]);
         let err = e_near + e_far;
-        let nend = normal_end(lam, x, y, z, 1.0, bb, nu);
+        let nend = if pressure { normal_end(lam, x, y, z, 1.0, bb, nu) } else { [0.0; 6] };
         let tend = if q == 0.0 { [0.0; 6] } else { shear_end(lam, x, y, z, 1.0, bb, nu) };
         let out: [f64; 6] = std::array::from_fn(|k| self.p0 * (val[k] + nend[k] + q * tend[k]));
         let [xx, yy, zz, xy, xz, yz] = out;

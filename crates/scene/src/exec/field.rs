@@ -121,23 +121,58 @@ pub(crate) fn contact(
             "Hertz sphere field in closed form".to_string()
         }
         ContactFieldMethod::HertzSliding { friction, angle } => {
-            // Hamilton's field has the shear along +x: work in axes turned by `angle`.
-            let load = HertzLoadField::new(n.ax, n.ax, n.p0, friction, f.nu)
-                .map_err(|e| solver_err("sliding sphere field", e))?;
+            let err = |e| solver_err("sliding Hertz field", e);
             let (c, s) = (angle.cos(), angle.sin());
+            let circle = n.ax == n.ay;
+            // A circle: Hamilton's field (shear along +x) in axes turned by `angle`. An
+            // ellipse: the pressure with the shear f p cos(angle) along x, plus the shear
+            // f p sin(angle) along y as the x-shear of the ellipse with its axes swapped,
+            // in axes turned by 90 degrees.
+            let along = if circle {
+                HertzLoadField::new(n.ax, n.ax, n.p0, friction, f.nu).map_err(err)?
+            } else {
+                HertzLoadField::new(n.ax, n.ay, n.p0, friction * c, f.nu).map_err(err)?
+            };
+            let across = if circle || s == 0.0 {
+                None
+            } else {
+                Some(
+                    HertzLoadField::new(n.ay, n.ax, n.p0, friction * s, f.nu)
+                        .map_err(err)?
+                        .without_pressure(),
+                )
+            };
             for (k, &z) in zs.iter().enumerate() {
                 for &y in &ys {
                     for &x in &xs {
-                        let local = load
-                            .stress(c * x + s * y, -s * x + c * y, z)
-                            .map_err(|e| solver_err("sliding sphere field", e))?;
-                        stresses.push(rotate_xy(&local.stress, c, s));
+                        let st = if circle {
+                            let local =
+                                along.stress(c * x + s * y, -s * x + c * y, z).map_err(err)?;
+                            rotate_xy(&local.stress, c, s)
+                        } else {
+                            let mut st = along.stress(x, y, z).map_err(err)?.stress;
+                            if let Some(across) = &across {
+                                let l = across.stress(y, -x, z).map_err(err)?.stress;
+                                let t = rotate_xy(&l, 0.0, 1.0);
+                                st = Stress3 {
+                                    xx: st.xx + t.xx,
+                                    yy: st.yy + t.yy,
+                                    zz: st.zz + t.zz,
+                                    xy: st.xy + t.xy,
+                                    xz: st.xz + t.xz,
+                                    yz: st.yz + t.yz,
+                                };
+                            }
+                            st
+                        };
+                        stresses.push(st);
                     }
                 }
                 cx.progress("subsurface field", k + 1, nz);
             }
             format!(
-                "sliding Hertz sphere (f = {friction}, shear at {:.1} deg) by Hamilton's field as one integral per point",
+                "sliding Hertz {} (f = {friction}, shear at {:.1} deg) by Hamilton's field as one integral per point and shear direction",
+                if circle { "sphere" } else { "ellipse" },
                 angle.to_degrees()
             )
         }

@@ -555,9 +555,13 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             let method = match (&normal, frictionless, sliding) {
                 _ if scene.solver.method == Method::Fast => ContactFieldMethod::Lattice,
                 (ContactNormal::Sphere { .. }, true, _) => ContactFieldMethod::HertzSphere,
-                (ContactNormal::Sphere { .. }, false, Some(angle)) => {
-                    ContactFieldMethod::HertzSliding { friction: f, angle }
-                }
+                (
+                    ContactNormal::Sphere { .. }
+                    | ContactNormal::Ellipse { .. }
+                    | ContactNormal::EllipseGiven { .. },
+                    false,
+                    Some(angle),
+                ) => ContactFieldMethod::HertzSliding { friction: f, angle },
                 (ContactNormal::Ellipse { .. } | ContactNormal::EllipseGiven { .. }, true, _) => {
                     ContactFieldMethod::HertzEllipse
                 }

@@ -161,8 +161,9 @@ pub enum Technique {
     /// The Hertz sphere's subsurface field in closed form (Huber; Hamilton 1983):
     /// `stickslip_halfspace::hertz::sphere_field`.
     HertzSphereField,
-    /// The sliding Hertz sphere's subsurface field (Hamilton 1983), one integral in the
-    /// ellipsoidal coordinate per point: `stickslip_halfspace::hertz::ellipse_field`.
+    /// The sliding Hertz sphere's or ellipse's subsurface field (Hamilton 1983; Sackfield &
+    /// Hills 1983), one integral in the ellipsoidal coordinate per point and shear direction:
+    /// `stickslip_halfspace::hertz::ellipse_field`.
     HamiltonSlidingField,
     /// The frictionless Hertz ellipse's subsurface field (Love 1929; Sackfield & Hills 1983),
     /// one integral in the ellipsoidal coordinate per point:
@@ -316,7 +317,7 @@ impl Technique {
                 "Hertz sphere subsurface field in closed form (Huber; Hamilton 1983)"
             }
             Technique::HamiltonSlidingField => {
-                "sliding Hertz sphere field, q = f p (Hamilton 1983), one integral in the ellipsoidal coordinate per point to 1e-11 p0"
+                "sliding Hertz sphere or ellipse field, q = f p (Hamilton 1983; Sackfield & Hills 1983), one integral in the ellipsoidal coordinate per point to 1e-11 p0"
             }
             Technique::HertzEllipseField => {
                 "Hertz ellipse subsurface field (Love 1929; Sackfield & Hills 1983), one integral in the ellipsoidal coordinate per point to 1e-11 p0"

@@ -234,8 +234,9 @@ pub struct ContactField {
 pub enum ContactFieldMethod {
     /// The Hertz sphere's closed-form field (frictionless normal contact).
     HertzSphere,
-    /// A Hertz sphere in full sliding, shear $fp$ along `angle` (radians from x) on the
-    /// substrate: Hamilton's (1983) field, as one integral in the ellipsoidal coordinate
+    /// A Hertz sphere or ellipse in full sliding, shear $fp$ along `angle` (radians from x)
+    /// on the substrate: Hamilton's (1983) field (Sackfield & Hills 1983 for the ellipse), as
+    /// one integral in the ellipsoidal coordinate per shear direction
     /// (`stickslip_halfspace::hertz::ellipse_field`).
     HertzSliding {
         /// Friction coefficient.
