@@ -17,10 +17,13 @@
 //! all six components together, in $d = s - \lambda$ on geometric panels from
 //! $10^{-2}\min(\lambda, z^2)$ to $c = \max(\lambda, a^2, b^2)$ and in $t = \sqrt{c/d}$ beyond.
 //!
-//! Checks (tests/hertz_field.rs): $a = b$ without shear against the closed form
-//! [`super::sphere_field::hertz_sphere_stress`] to $10^{-10}p_0$; the sliding sphere against
-//! the Cerruti quadrature [`super::sphere_field::sliding_sphere_stress`] to $10^{-8}p_0$ and
-//! against [`super::sphere_field::sliding_trailing_edge_tension`].
+//! Checks (tests/hertz_load_field.rs; measured worst in brackets): $a = b$ without shear
+//! against the closed form [`super::sphere_field::hertz_sphere_stress`] (tolerance
+//! $10^{-10}p_0$; $6\times10^{-13}p_0$); the sliding sphere against the Cerruti quadrature
+//! [`super::sphere_field::sliding_sphere_stress`] ($10^{-8}p_0$; $7\times10^{-16}p_0$) and
+//! [`super::sphere_field::sliding_trailing_edge_tension`]; the ellipse against Boussinesq +
+//! Cerruti quadrature over the ellipse and its axis $\sigma_z = -p_0ab/\sqrt{(a^2+z^2)(b^2+z^2)}$.
+//! Cost: about 1,200 integrand evaluations, 20–40 µs, per point.
 
 use super::ellipse_field_terms::{normal_end, normal_integrand, shear_end, shear_integrand};
 use super::sphere_field::StressEstimate;
@@ -42,7 +45,8 @@ pub struct HertzLoadField {
     lo: GaussLegendre,
 }
 
-/// Relative tolerance of [`HertzLoadField::stress`] (per unit $p_0$, all components).
+/// Tolerance of the $s$ integral in [`HertzLoadField::stress`]: absolute, in units of $p_0$,
+/// summed over the panels (the largest component per panel).
 pub const FIELD_TOLERANCE: f64 = 1e-11;
 
 impl HertzLoadField {
