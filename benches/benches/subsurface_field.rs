@@ -4,9 +4,16 @@
 //! the accuracy on the axis, where the shear does not contribute to sigma_z and sigma_r, against
 //! the closed forms of Johnson eq. 3.45, and the maximum shear against 0.31 p0 at 0.48 a.
 //! Target (issue 17): <= 3 s on 2 cores.
+//!
+//! Also the per-point fields of the Hertz loads (`hertz::ellipse_field`: Hamilton's sliding
+//! sphere and the Hertz ellipse as one integral in the ellipsoidal coordinate) beside the 2D
+//! Cerruti quadrature they replace, with their agreement; and the lattice field above against
+//! Hamilton's on the x axis section (the lattice's discretisation error at 200 cells across).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::time::Instant;
+use stickslip_halfspace::hertz::ellipse_field::HertzLoadField;
+use stickslip_halfspace::hertz::sphere_field::sliding_sphere_stress;
 use stickslip_traction::field::{subsurface_field, FieldConfig, Lattice, SurfaceTraction};
 
 const NU: f64 = 0.3;
@@ -51,6 +58,68 @@ fn bench(c: &mut Criterion) {
         m.von_mises.value, m.von_mises.z, m.tresca.value, m.tresca.x, m.tresca.y, m.tresca.z,
         m.max_principal.value, m.max_principal.x,
     );
+    // The lattice against Hamilton's field (same load) on the section y = 0, every 4th cell
+    // in x over |x| <= 1.24 a, every 4th layer: the lattice's discretisation error.
+    let hamilton = HertzLoadField::new(a, a, 1.0, 0.25, NU).expect("field");
+    let mut gap = 0.0f64;
+    for layer in f.layers.iter().step_by(4) {
+        for i in (128 - 124..=128 + 124).step_by(4) {
+            let (x, _) = l.centre(i, 128);
+            let s = hamilton.stress(x, 0.0, layer.z).expect("stress").stress;
+            let k = 128 * side + i;
+            let pairs = [
+                (layer.xx[k], s.xx),
+                (layer.yy[k], s.yy),
+                (layer.zz[k], s.zz),
+                (layer.xy[k], s.xy),
+                (layer.xz[k], s.xz),
+                (layer.yz[k], s.yz),
+            ];
+            for (u, w) in pairs {
+                gap = gap.max((u - w).abs());
+            }
+        }
+    }
+    println!(
+        "accuracy subsurface_field {side}x{side} lattice vs Hamilton's sliding sphere (f = 0.25) on \
+         y = 0, |x| <= 1.24 a, z = 0.05 ... 3.05 a: max |diff| {gap:.2e} p0"
+    );
+    // Per point: the ellipsoidal-coordinate integral against the 2D Cerruti quadrature.
+    let pts = [(0.2, -0.3, 0.4), (-1.0, 0.0, 0.01), (1.3, 0.4, 0.6), (0.0, 0.0, 0.48)];
+    let mut agree = 0.0f64;
+    let t1 = Instant::now();
+    let mut evals = 0usize;
+    for &(x, y, z) in &pts {
+        let r = sliding_sphere_stress(a, 1.0, 0.25, NU, (x, y, z), 1e-11).expect("quadrature");
+        evals += r.evals;
+        let s = hamilton.stress(x, y, z).expect("stress").stress;
+        let d = [
+            s.xx - r.stress.xx,
+            s.yy - r.stress.yy,
+            s.zz - r.stress.zz,
+            s.xy - r.stress.xy,
+            s.xz - r.stress.xz,
+            s.yz - r.stress.yz,
+        ];
+        agree = d.iter().fold(agree, |m, v| m.max(v.abs()));
+    }
+    let quad_secs = t1.elapsed().as_secs_f64() / pts.len() as f64;
+    println!(
+        "accuracy hertz_point_field: Hamilton's sliding sphere as one s-integral vs 2D Cerruti \
+         quadrature (rel tol 1e-11, {} evaluations, {quad_secs:.3} s per point) at {} points: max \
+         |diff| {agree:.2e} p0",
+        evals / pts.len(),
+        pts.len()
+    );
+    let ellipse = HertzLoadField::new(a, 0.4 * a, 1.0, 0.0, NU).expect("field");
+    let mut group = c.benchmark_group("hertz_point_field");
+    group.bench_function("sliding sphere, s-integral, 4 points", |b| {
+        b.iter(|| pts.map(|(x, y, z)| hamilton.stress(x, y, z).expect("stress").stress.xx))
+    });
+    group.bench_function("ellipse b/a = 0.4, s-integral, 4 points", |b| {
+        b.iter(|| pts.map(|(x, y, z)| ellipse.stress(x, y, z).expect("stress").stress.xx))
+    });
+    group.finish();
     let mut group = c.benchmark_group("subsurface_field");
     group.sample_size(10);
     group.bench_function("256x256x64 p+qx", |b| {

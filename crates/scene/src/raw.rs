@@ -329,15 +329,16 @@ pub(crate) struct RawOutputs {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawField {
-    /// x: [from, to, count].
-    #[schemars(with = "Vec<f64>")]
-    pub x: Spanned<Vec<f64>>,
+    /// x: [from, to, count]; with scale = "m", from and to may be lengths with units
+    /// ("-1.5 mm").
+    #[schemars(with = "Vec<Qty>")]
+    pub x: Spanned<Vec<SQty>>,
     /// 2D: depth [from, to, count] (from > 0); 3D: y [from, to, count].
-    #[schemars(with = "Vec<f64>")]
-    pub y: Spanned<Vec<f64>>,
+    #[schemars(with = "Vec<Qty>")]
+    pub y: Spanned<Vec<SQty>>,
     /// 3D only: depth [from, to, count] (from > 0).
-    #[schemars(with = "Option<Vec<f64>>")]
-    pub z: Option<Spanned<Vec<f64>>>,
+    #[schemars(with = "Option<Vec<Qty>>")]
+    pub z: Option<Spanned<Vec<SQty>>>,
     /// The unit of the coordinates: the contact half-width a, or metres.
     #[schemars(with = "Option<String>")]
     pub scale: Option<Spanned<String>>,

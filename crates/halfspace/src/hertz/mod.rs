@@ -7,6 +7,8 @@
 //! and E (sphere). Loads are positive, pressures positive in compression.
 
 mod ellipse;
+pub mod ellipse_field;
+mod ellipse_field_terms;
 pub mod sphere_field;
 pub mod strip;
 

@@ -47,6 +47,11 @@ pub mod tol {
     /// Sliding sphere 1e-6 a below the surface inside the contact: the field differs from the
     /// surface traction by O(z/a) times gradients of order 1, plus the quadrature's 1e-10.
     pub const SLIDING_SURFACE: f64 = 1e-5;
+    /// The elliptic Hertz field (one s-integral asked for 1e-11 of p0) against the sphere's
+    /// closed form: the integral's tolerance plus rounding in the generated terms.
+    pub const ELLIPSE_FIELD_VS_CLOSED: f64 = 1e-10;
+    /// The sliding field against the Cerruti quadrature asked for 1e-11 relative.
+    pub const SLIDING_FIELD_VS_QUAD: f64 = 1e-8;
 }
 
 /// Parse a CSV table: skip `#` comments and the header line, return rows of f64.

@@ -6,6 +6,7 @@ use stickslip_graded::StressField;
 use stickslip_halfspace::mcewen::HertzTraction;
 use stickslip_halfspace::Stress2;
 
+use stickslip_halfspace::hertz::ellipse_field::HertzLoadField;
 use stickslip_halfspace::hertz::sphere_field::hertz_sphere_stress;
 use stickslip_halfspace::Stress3;
 use stickslip_traction::field::{
@@ -119,6 +120,78 @@ pub(crate) fn contact(
             }
             "Hertz sphere field in closed form".to_string()
         }
+        ContactFieldMethod::HertzSliding { friction, angle } => {
+            let err = |e| solver_err("sliding Hertz field", e);
+            let (c, s) = (angle.cos(), angle.sin());
+            let circle = n.ax == n.ay;
+            // A circle: Hamilton's field (shear along +x) in axes turned by `angle`. An
+            // ellipse: the pressure with the shear f p cos(angle) along x, plus the shear
+            // f p sin(angle) along y as the x-shear of the ellipse with its axes swapped,
+            // in axes turned by 90 degrees.
+            let along = if circle {
+                HertzLoadField::new(n.ax, n.ax, n.p0, friction, f.nu).map_err(err)?
+            } else {
+                HertzLoadField::new(n.ax, n.ay, n.p0, friction * c, f.nu).map_err(err)?
+            };
+            let across = if circle || s == 0.0 {
+                None
+            } else {
+                Some(
+                    HertzLoadField::new(n.ay, n.ax, n.p0, friction * s, f.nu)
+                        .map_err(err)?
+                        .without_pressure(),
+                )
+            };
+            for (k, &z) in zs.iter().enumerate() {
+                for &y in &ys {
+                    for &x in &xs {
+                        let st = if circle {
+                            let local =
+                                along.stress(c * x + s * y, -s * x + c * y, z).map_err(err)?;
+                            rotate_xy(&local.stress, c, s)
+                        } else {
+                            let mut st = along.stress(x, y, z).map_err(err)?.stress;
+                            if let Some(across) = &across {
+                                let l = across.stress(y, -x, z).map_err(err)?.stress;
+                                let t = rotate_xy(&l, 0.0, 1.0);
+                                st = Stress3 {
+                                    xx: st.xx + t.xx,
+                                    yy: st.yy + t.yy,
+                                    zz: st.zz + t.zz,
+                                    xy: st.xy + t.xy,
+                                    xz: st.xz + t.xz,
+                                    yz: st.yz + t.yz,
+                                };
+                            }
+                            st
+                        };
+                        stresses.push(st);
+                    }
+                }
+                cx.progress("subsurface field", k + 1, nz);
+            }
+            format!(
+                "sliding Hertz {} (f = {friction}, shear at {:.1} deg) by Hamilton's field as one integral per point and shear direction",
+                if circle { "sphere" } else { "ellipse" },
+                angle.to_degrees()
+            )
+        }
+        ContactFieldMethod::HertzEllipse => {
+            let load = HertzLoadField::new(n.ax, n.ay, n.p0, 0.0, f.nu)
+                .map_err(|e| solver_err("Hertz ellipse field", e))?;
+            for (k, &z) in zs.iter().enumerate() {
+                for &y in &ys {
+                    for &x in &xs {
+                        let st = load
+                            .stress(x, y, z)
+                            .map_err(|e| solver_err("Hertz ellipse field", e))?;
+                        stresses.push(st.stress);
+                    }
+                }
+                cx.progress("subsurface field", k + 1, nz);
+            }
+            "Hertz ellipse field as one integral per point (Love's potential)".to_string()
+        }
         ContactFieldMethod::Lattice => {
             let (fl, p, qx, qy) = extended_lattice(lat, &xs, &ys)?;
             let t = SurfaceTraction { p: &p, qx: &qx, qy: &qy };
@@ -179,6 +252,19 @@ pub(crate) fn contact(
         values: (total <= INLINE_FIELD_POINTS).then(|| a.clone()),
         arrays: a,
     })
+}
+
+/// A stress given in axes turned by the angle of cosine `c` and sine `s` about z, in the
+/// scene's axes: $\sigma = R\sigma'R^T$ with the columns of $R$ the turned axes.
+fn rotate_xy(l: &Stress3, c: f64, s: f64) -> Stress3 {
+    Stress3 {
+        xx: c * c * l.xx - 2.0 * c * s * l.xy + s * s * l.yy,
+        yy: s * s * l.xx + 2.0 * c * s * l.xy + c * c * l.yy,
+        xy: c * s * (l.xx - l.yy) + (c * c - s * s) * l.xy,
+        zz: l.zz,
+        xz: c * l.xz - s * l.yz,
+        yz: s * l.xz + c * l.yz,
+    }
 }
 
 /// The contact lattice extended with unloaded cells of the same size so that every box

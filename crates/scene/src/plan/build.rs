@@ -548,9 +548,22 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     let field = match scene.outputs.field {
         Some(grid) => {
             let frictionless = tangential.is_none();
-            let method = match (&normal, frictionless) {
-                (ContactNormal::Sphere { .. }, true) if scene.solver.method != Method::Fast => {
-                    ContactFieldMethod::HertzSphere
+            let sliding = match tangential {
+                Some(Tangential::Sliding { angle }) => Some(angle),
+                _ => None,
+            };
+            let method = match (&normal, frictionless, sliding) {
+                _ if scene.solver.method == Method::Fast => ContactFieldMethod::Lattice,
+                (ContactNormal::Sphere { .. }, true, _) => ContactFieldMethod::HertzSphere,
+                (
+                    ContactNormal::Sphere { .. }
+                    | ContactNormal::Ellipse { .. }
+                    | ContactNormal::EllipseGiven { .. },
+                    false,
+                    Some(angle),
+                ) => ContactFieldMethod::HertzSliding { friction: f, angle },
+                (ContactNormal::Ellipse { .. } | ContactNormal::EllipseGiven { .. }, true, _) => {
+                    ContactFieldMethod::HertzEllipse
                 }
                 _ => ContactFieldMethod::Lattice,
             };
@@ -831,6 +844,8 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
             ),
             match field.method {
                 ContactFieldMethod::HertzSphere => Technique::HertzSphereField,
+                ContactFieldMethod::HertzSliding { .. } => Technique::HamiltonSlidingField,
+                ContactFieldMethod::HertzEllipse => Technique::HertzEllipseField,
                 ContactFieldMethod::Lattice => Technique::LatticeField,
             },
         )),

@@ -90,7 +90,15 @@ pub(crate) fn estimate(
                 mem += cells * nz * 90;
             }
             t => {
-                let per = if t == Some(T::StressQuadrature) { 1200 } else { 6 };
+                // The ellipsoidal-coordinate integral: about 1,200 evaluations of a 200-term
+                // integrand per point; measured (benches/subsurface_field.rs, hertz_point_field)
+                // 40 us per point for the sliding sphere, 18 us for the frictionless ellipse:
+                // costed as 1,600 closed-form evaluations of 25 ns.
+                let per = match t {
+                    Some(T::StressQuadrature) => 1200,
+                    Some(T::HamiltonSlidingField | T::HertzEllipseField) => 1600,
+                    _ => 6,
+                };
                 evals += n * per;
                 secs += (n * per) as f64 * 2.5e-8;
             }

@@ -161,6 +161,14 @@ pub enum Technique {
     /// The Hertz sphere's subsurface field in closed form (Huber; Hamilton 1983):
     /// `stickslip_halfspace::hertz::sphere_field`.
     HertzSphereField,
+    /// The sliding Hertz sphere's or ellipse's subsurface field (Hamilton 1983; Sackfield &
+    /// Hills 1983), one integral in the ellipsoidal coordinate per point and shear direction:
+    /// `stickslip_halfspace::hertz::ellipse_field`.
+    HamiltonSlidingField,
+    /// The frictionless Hertz ellipse's subsurface field (Love 1929; Sackfield & Hills 1983),
+    /// one integral in the ellipsoidal coordinate per point:
+    /// `stickslip_halfspace::hertz::ellipse_field`.
+    HertzEllipseField,
     /// Subsurface stresses of a lattice traction by FFT per depth layer with the exact
     /// uniform-rectangle stresses (FORMULAS.md F): `stickslip_traction::field`.
     LatticeField,
@@ -175,7 +183,7 @@ pub enum Technique {
 
 impl Technique {
     /// Every technique, in the order of declaration.
-    pub const ALL: [Technique; 28] = [
+    pub const ALL: [Technique; 30] = [
         Technique::HertzLine,
         Technique::GradedCylinder,
         Technique::FlatPunch,
@@ -204,6 +212,8 @@ impl Technique {
         Technique::SteadyRolling,
         Technique::Fastsim,
         Technique::Polach,
+        Technique::HamiltonSlidingField,
+        Technique::HertzEllipseField,
     ];
 
     /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
@@ -238,6 +248,8 @@ impl Technique {
             Technique::SteadyRolling => 25,
             Technique::Fastsim => 26,
             Technique::Polach => 27,
+            Technique::HamiltonSlidingField => 28,
+            Technique::HertzEllipseField => 29,
         }
     }
 
@@ -303,6 +315,12 @@ impl Technique {
             }
             Technique::HertzSphereField => {
                 "Hertz sphere subsurface field in closed form (Huber; Hamilton 1983)"
+            }
+            Technique::HamiltonSlidingField => {
+                "sliding Hertz sphere or ellipse field, q = f p (Hamilton 1983; Sackfield & Hills 1983), one integral in the ellipsoidal coordinate per point to 1e-11 p0"
+            }
+            Technique::HertzEllipseField => {
+                "Hertz ellipse subsurface field (Love 1929; Sackfield & Hills 1983), one integral in the ellipsoidal coordinate per point to 1e-11 p0"
             }
             Technique::LatticeField => {
                 "lattice traction by FFT per depth layer with exact rectangle stresses (FORMULAS.md F), interpolated to the box, numerical"

@@ -230,10 +230,23 @@ pub struct ContactField {
 }
 
 /// How the stresses of a 3D contact are computed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ContactFieldMethod {
     /// The Hertz sphere's closed-form field (frictionless normal contact).
     HertzSphere,
+    /// A Hertz sphere or ellipse in full sliding, shear $fp$ along `angle` (radians from x)
+    /// on the substrate: Hamilton's (1983) field (Sackfield & Hills 1983 for the ellipse), as
+    /// one integral in the ellipsoidal coordinate per shear direction
+    /// (`stickslip_halfspace::hertz::ellipse_field`).
+    HertzSliding {
+        /// Friction coefficient.
+        friction: f64,
+        /// Direction of the shear on the substrate (radians from x).
+        angle: f64,
+    },
+    /// The frictionless Hertz ellipse's field (Love 1929; Sackfield & Hills 1983), one
+    /// integral in the ellipsoidal coordinate per point.
+    HertzEllipse,
     /// The lattice's pressure and tractions by FFT convolution per depth layer with the exact
     /// stresses of uniformly loaded rectangles, interpolated bilinearly to the box.
     Lattice,

@@ -565,7 +565,11 @@ fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Output
     let Some(o) = o else {
         return Ok(Outputs { surface: true, field: None, cycle: None, plots: false });
     };
-    let axis = |v: &Spanned<Vec<f64>>, key: &str| -> Result<(f64, f64, usize), SceneError> {
+    // from and to: numbers in the scale's unit, or (scale = "m") lengths with units
+    let axis = |v: &Spanned<Vec<crate::raw::SQty>>,
+                key: &str,
+                metres: bool|
+     -> Result<(f64, f64, usize), SceneError> {
         cx.record(key, v.span());
         let a = v.get_ref();
         let bad = |m: String| {
@@ -575,12 +579,33 @@ fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Output
         if a.len() != 3 {
             return Err(bad(format!("expected [from, to, count], got {} values", a.len())));
         }
-        let n = a[2];
+        let end = |q: &crate::raw::SQty| -> Result<f64, SceneError> {
+            match q.get_ref() {
+                Qty::Num(v) => Ok(*v),
+                Qty::Text(t) if !metres => Err(cx
+                    .err(
+                        ErrorKind::Unit,
+                        key,
+                        Some(q.span()),
+                        format!(
+                            "expected a number, found the string \"{t}\" (scale = \"a\" measures in contact semi-axes)"
+                        ),
+                    )
+                    .hint("write plain numbers (multiples of a), or set scale = \"m\" to give lengths like \"1.5 mm\"")),
+                Qty::Text(_) => cx.qty(q, key, Dim::LENGTH, "length"),
+            }
+        };
+        let (from, to) = (end(&a[0])?, end(&a[1])?);
+        cx.record(key, v.span());
+        let n = match a[2].get_ref() {
+            Qty::Num(n) => *n,
+            Qty::Text(t) => return Err(bad(format!("count \"{t}\" is not a number"))),
+        };
         // An integer count; its range is validation's.
         if !(n.fract() == 0.0 && n >= 0.0 && n <= usize::MAX as f64) {
             return Err(bad(format!("count {n} is not an integer in 2..=10000")));
         }
-        Ok((a[0], a[1], n as usize))
+        Ok((from, to, n as usize))
     };
     let field = match &o.field {
         None => None,
@@ -594,13 +619,14 @@ fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Output
                     _ => FieldScale::Metres,
                 },
             };
+            let metres = scale == FieldScale::Metres;
             let z = match &fr.z {
-                Some(z) => Some(axis(z, "outputs.field.z")?),
+                Some(z) => Some(axis(z, "outputs.field.z", metres)?),
                 None => None,
             };
             Some(FieldGrid {
-                x: axis(&fr.x, "outputs.field.x")?,
-                y: axis(&fr.y, "outputs.field.y")?,
+                x: axis(&fr.x, "outputs.field.x", metres)?,
+                y: axis(&fr.y, "outputs.field.y", metres)?,
                 z,
                 scale,
             })
