@@ -1,7 +1,10 @@
 //! SVG plots of an outcome (plotters, SVG backend), rendered to strings so that nothing is
 //! written before every plot has been drawn.
 
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::prelude::*;
+
+mod contour;
 
 use crate::exec::outcome::{Outcome, SurfaceOut};
 use crate::report::eng;
@@ -203,22 +206,76 @@ impl Scale {
     }
 }
 
-/// The colour bar of `scale` in `area`, labelled with the value's name and unit.
+/// A label of a contour level on a grid of round levels `step` apart: the decimals the step
+/// needs, no exponent, no "-0".
+fn level_label(v: f64, step: f64) -> String {
+    let decimals = (-step.abs().max(1e-300).log10().floor()).clamp(0.0, 9.0) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+/// A linear axis from `lo` to `hi` whose ticks are exactly `ticks` (the contour levels), for
+/// the colour bar. (plotters' own `with_key_points` does not take a label formatter.)
+struct LevelAxis {
+    lo: f64,
+    hi: f64,
+    ticks: Vec<f64>,
+}
+
+impl Ranged for LevelAxis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, v: &f64, limit: (i32, i32)) -> i32 {
+        let t = (v - self.lo) / (self.hi - self.lo);
+        limit.0 + (t * f64::from(limit.1 - limit.0)).round() as i32
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, _hint: Hint) -> Vec<f64> {
+        self.ticks.clone()
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+}
+
+/// Contour lines: thin, dark and half transparent so that the colours stay readable.
+fn contour_style() -> ShapeStyle {
+    RGBColor(20, 20, 20).mix(0.7).stroke_width(1)
+}
+
+/// The colour bar of `scale` in `area`, labelled with the value's name and unit. Its ticks
+/// are the contour levels `levels` (in the units of `units`, `step` apart), each marked
+/// with a contour-styled line across the bar, and the bar's ends where they are round.
 fn colour_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     scale: Scale,
     units: &Units,
     name: &str,
+    (step, levels): (f64, &[f64]),
 ) -> Result<(), String> {
     let (lo, hi) = scale.bounds();
     let (a, b) = (lo / units.div, hi / units.div);
     let (a, b) = if b > a { (a, b) } else { (a - 1.0, a + 1.0) };
+    let mut ticks = levels.to_vec();
+    let round = |v: f64| step > 0.0 && (v / step - (v / step).round()).abs() < 1e-9;
+    for end in [a, b] {
+        if round(end) {
+            ticks.push(end);
+        }
+    }
+    ticks.sort_by(f64::total_cmp);
     let mut bar = ChartBuilder::on(area)
         .margin_top(12)
         .margin_bottom(45)
         .margin_right(8)
         .y_label_area_size(60)
-        .build_cartesian_2d(0.0..1.0, a..b)
+        .build_cartesian_2d(0.0..1.0, LevelAxis { lo: a, hi: b, ticks })
         .map_err(|e| e.to_string())?;
     bar.configure_mesh()
         .disable_mesh()
@@ -226,7 +283,7 @@ fn colour_bar<DB: DrawingBackend>(
         .y_label_style(("sans-serif", 12))
         .axis_desc_style(("sans-serif", 13))
         .y_desc(units.desc(name))
-        .y_label_formatter(&|v| tick(*v, b - a))
+        .y_label_formatter(&|v| if step > 0.0 { level_label(*v, step) } else { tick(*v, b - a) })
         .draw()
         .map_err(|e| e.to_string())?;
     let n = 64;
@@ -235,6 +292,10 @@ fn colour_bar<DB: DrawingBackend>(
         let c = scale.colour(0.5 * (v0 + v1) * units.div);
         Rectangle::new([(0.0, v0), (1.0, v1)], c.filled())
     }))
+    .map_err(|e| e.to_string())?;
+    bar.draw_series(
+        levels.iter().map(|&l| PathElement::new(vec![(0.0, l), (1.0, l)], contour_style())),
+    )
     .map_err(|e| e.to_string())?;
     Ok(())
 }
@@ -387,12 +448,25 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
                 )
             }))
             .map_err(err)?;
+        // Contours at the colour bar's round levels.
+        let (step, levels) =
+            contour::round_levels(scale.bounds().0 / vu.div, scale.bounds().1 / vu.div);
+        for &l in &levels {
+            for line in contour::iso_lines(x, y, v, l * vu.div) {
+                chart
+                    .draw_series(std::iter::once(PathElement::new(
+                        line.points.iter().map(|&(px, py)| (px / d, py / d)).collect::<Vec<_>>(),
+                        contour_style(),
+                    )))
+                    .map_err(err)?;
+            }
+        }
         chart
             .draw_series(m.outline.iter().map(|&[(x0, y0), (x1, y1)]| {
                 PathElement::new(vec![(x0 / d, y0 / d), (x1 / d, y1 / d)], WHITE.stroke_width(2))
             }))
             .map_err(err)?;
-        colour_bar(&right, scale, &vu, m.name)?;
+        colour_bar(&right, scale, &vu, m.name, (step, &levels))?;
         root.present().map_err(err)?;
     }
     Ok(s)
