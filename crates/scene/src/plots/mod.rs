@@ -5,9 +5,11 @@ use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::prelude::*;
 
 mod contour;
+mod reference;
 
 use crate::exec::outcome::{Outcome, SurfaceOut};
-use crate::report::eng;
+use crate::plan::Plan;
+use crate::report::eng_near;
 
 type PlotResult = Result<String, String>;
 
@@ -17,6 +19,8 @@ struct Curve<'a> {
     x: &'a [f64],
     y: &'a [f64],
     colour: RGBColor,
+    /// A closed-form reference, drawn dashed.
+    dashed: bool,
 }
 
 fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -92,8 +96,22 @@ fn tick(v: f64, span: f64) -> String {
     }
 }
 
-fn line_chart(
+/// `area` below a title line and, when `sub` is not empty, a smaller line of key parameters.
+fn titled<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
     title: &str,
+    sub: &str,
+) -> Result<DrawingArea<DB, plotters::coord::Shift>, String> {
+    let area = area.titled(title, ("sans-serif", 16)).map_err(err)?;
+    if sub.is_empty() {
+        Ok(area)
+    } else {
+        area.titled(sub, ("sans-serif", 13)).map_err(err)
+    }
+}
+
+fn line_chart(
+    (title, sub): (&str, &str),
     (xname, xbase): (&str, &str),
     (yname, ybase): (&str, &str),
     curves: &[Curve<'_>],
@@ -105,12 +123,12 @@ fn line_chart(
         curves.iter().map(|c| (xu.scale(c.x), yu.scale(c.y))).collect();
     let mut s = String::new();
     {
-        let root = SVGBackend::with_string(&mut s, (720, 440)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut s, (720, 460)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
+        let root = titled(&root, title, sub)?;
         let (x0, x1) = range(scaled.iter().flat_map(|c| c.0.iter().copied()));
         let (y0, y1) = range(scaled.iter().flat_map(|c| c.1.iter().copied()));
         let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 17))
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(70)
@@ -134,16 +152,29 @@ fn line_chart(
         }
         for (c, (x, y)) in curves.iter().zip(&scaled) {
             let col = c.colour;
-            chart
-                .draw_series(LineSeries::new(
-                    x.iter().copied().zip(y.iter().copied()),
-                    col.stroke_width(2),
-                ))
-                .map_err(err)?
-                .label(c.label)
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], col.stroke_width(2))
-                });
+            let pts = x.iter().copied().zip(y.iter().copied());
+            if c.dashed {
+                chart
+                    .draw_series(DashedLineSeries::new(pts, 7, 4, col.stroke_width(2)))
+                    .map_err(err)?
+                    .label(c.label)
+                    .legend(move |(x, y)| {
+                        plotters::element::DashedPathElement::new(
+                            vec![(x, y), (x + 18, y)],
+                            5,
+                            3,
+                            col.stroke_width(2),
+                        )
+                    });
+            } else {
+                chart
+                    .draw_series(LineSeries::new(pts, col.stroke_width(2)))
+                    .map_err(err)?
+                    .label(c.label)
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 18, y)], col.stroke_width(2))
+                    });
+            }
         }
         chart
             .configure_series_labels()
@@ -378,6 +409,8 @@ fn coarse_rows(v: &[Vec<f64>], by: usize, bx: usize) -> Vec<Vec<f64>> {
 /// A map of `v[j][i]` (rows along y, columns along x) of the quantity `name` in `base` units.
 struct Map<'a> {
     title: String,
+    /// Key parameters, a second title line.
+    sub: &'a str,
     name: &'a str,
     base: &'a str,
     x: &'a [f64],
@@ -408,12 +441,12 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
     let (pw, ph) = equal_axes(xb - xa, yb - ya);
     // plot area + y labels (75) + margins; the colour bar takes 110 on the right.
     // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
-    let (w, h) = ((pw + 75 + 24 + 110).max(720), ph + 40 + 45 + 24);
+    let (w, h) = ((pw + 75 + 24 + 110).max(720), ph + 60 + 45 + 24);
     let mut s = String::new();
     {
         let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let root = root.titled(&m.title, ("sans-serif", 15)).map_err(err)?;
+        let root = titled(&root, &m.title, m.sub)?;
         let (left, rest) = root.split_horizontally(pw + 75 + 24);
         let (right, _) = rest.split_horizontally(110);
         let (sxa, sxb, sya, syb) = (xa / lu.div, xb / lu.div, ya / lu.div, yb / lu.div);
@@ -472,7 +505,7 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
     Ok(s)
 }
 
-fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
+fn stick_map((title, sub): (&str, &str), x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
     let (bx, by) = (block(x.len()), block(y.len()));
     if bx > 1 || by > 1 {
         // A block sticks if most of its contact elements stick; outside if it has none.
@@ -501,7 +534,7 @@ fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult
                     .collect()
             })
             .collect();
-        return stick_map(title, &coarse_axis(x, bx), &coarse_axis(y, by), &merged);
+        return stick_map((title, sub), &coarse_axis(x, bx), &coarse_axis(y, by), &merged);
     }
     let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
     let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
@@ -513,12 +546,10 @@ fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult
     let mut s = String::new();
     {
         // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
-        let root = SVGBackend::with_string(&mut s, ((pw + 75 + 24).max(720), ph + 40 + 45 + 24))
+        let root = SVGBackend::with_string(&mut s, ((pw + 75 + 24).max(720), ph + 60 + 45 + 24))
             .into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let root = root
-            .titled(&format!("{title}: stick (blue), slip (red)"), ("sans-serif", 15))
-            .map_err(err)?;
+        let root = titled(&root, &format!("{title}: stick (blue), slip (red)"), sub)?;
         let (root, _) = root.split_horizontally(pw + 75 + 24);
         let (sxa, sxb, sya, syb) = (xa / d, xb / d, ya / d, yb / d);
         let mut chart = ChartBuilder::on(&root)
@@ -561,48 +592,78 @@ fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult
     Ok(s)
 }
 
-/// Every plot of `out` as (file name, SVG text). Titles start with the scene's title.
-pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
+/// `n` points from `a` to `b`.
+fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n).map(|k| a + (b - a) * k as f64 / (n - 1) as f64).collect()
+}
+
+/// A closed form sampled densely along x at the fixed y `y0`, as a dashed curve's data.
+fn sample(r: &reference::Reference, x0: f64, x1: f64, y0: f64) -> (Vec<f64>, Vec<f64>) {
+    let xs = linspace(x0, x1, 401);
+    let ys = xs.iter().map(|&x| (r.at)(x, y0)).collect();
+    (xs, ys)
+}
+
+/// Every plot of `out` as (file name, SVG text). Titles start with the scene's title, with
+/// the key parameters on a second line; the closed-form references of the planned scene
+/// (when `plan` is given) are drawn dashed.
+pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, String)>, String> {
     let mut files = Vec::new();
     let blue = RGBColor(40, 90, 200);
     let red = RGBColor(200, 60, 40);
+    let grey = RGBColor(40, 40, 40);
     let st = &out.title;
+    let sub = reference::key_parameters(plan, out);
+    let sub = sub.as_str();
+    let refs = plan.map(|p| reference::of(p, out)).unwrap_or_default();
     let x_m = ("x", "m");
     match &out.surface {
         SurfaceOut::Line { x, p, q, ux, uy, .. } if !x.is_empty() => {
+            let (x0, x1) = (x[0], x[x.len() - 1]);
+            let pref = refs.pressure.as_ref().map(|r| (r.label, sample(r, x0, x1, 0.0)));
+            let qref = refs.traction.as_ref().map(|r| (r.label, sample(r, x0, x1, 0.0)));
+            let mut curves = vec![Curve { dashed: false, label: "p", x, y: p, colour: blue }];
+            if let Some((label, (rx, ry))) = &pref {
+                curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+            }
             files.push((
                 "pressure.svg".to_string(),
                 line_chart(
-                    &format!("{st}: contact pressure"),
+                    (&format!("{st}: contact pressure"), sub),
                     x_m,
                     ("p", "Pa"),
-                    &[Curve { label: "p", x, y: p, colour: blue }],
+                    &curves,
                     &[],
                 )?,
             ));
             let mut bands: Vec<(f64, f64, RGBColor)> =
                 out.zones.stick.iter().map(|z| (z[0], z[1], blue)).collect();
             bands.extend(out.zones.slip.iter().map(|z| (z[0], z[1], red)));
+            let mut curves = vec![
+                Curve { dashed: false, label: "q", x, y: q, colour: red },
+                Curve { dashed: false, label: "p", x, y: p, colour: blue },
+            ];
+            if let Some((label, (rx, ry))) = &qref {
+                curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+            }
             files.push((
                 "traction.svg".to_string(),
                 line_chart(
-                    &format!("{st}: shear traction q (bands: stick blue, slip red)"),
+                    (&format!("{st}: shear traction q (bands: stick blue, slip red)"), sub),
                     x_m,
                     ("p, q", "Pa"),
-                    &[
-                        Curve { label: "q", x, y: q, colour: red },
-                        Curve { label: "p", x, y: p, colour: blue },
-                    ],
+                    &curves,
                     &bands,
                 )?,
             ));
             files.push((
                 "stick_slip.svg".to_string(),
                 line_chart(
-                    &format!("{st}: stick (blue) and slip (red) zones, |q|/p"),
+                    (&format!("{st}: stick (blue) and slip (red) zones, |q|/p"), sub),
                     x_m,
                     ("|q| / p", ""),
                     &[Curve {
+                        dashed: false,
                         label: "|q|/p",
                         x,
                         y: &p
@@ -610,7 +671,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                             .zip(q)
                             .map(|(p, q)| if *p > 0.0 { q.abs() / p } else { 0.0 })
                             .collect::<Vec<_>>(),
-                        colour: RGBColor(40, 40, 40),
+                        colour: grey,
                     }],
                     &bands,
                 )?,
@@ -619,12 +680,12 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 files.push((
                     "displacement.svg".to_string(),
                     line_chart(
-                        &format!("{st}: surface displacement of the substrate"),
+                        (&format!("{st}: surface displacement of the substrate"), sub),
                         x_m,
                         ("u", "m"),
                         &[
-                            Curve { label: "ux", x, y: ux, colour: red },
-                            Curve { label: "uy", x, y: uy, colour: blue },
+                            Curve { dashed: false, label: "ux", x, y: ux, colour: red },
+                            Curve { dashed: false, label: "uy", x, y: uy, colour: blue },
                         ],
                         &[],
                     )?,
@@ -639,6 +700,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
             let outline = stick_outline(x, y, stick);
             let map = |title: String, name, v| Map {
                 title,
+                sub,
                 name,
                 base: "Pa",
                 x,
@@ -665,7 +727,36 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                     &qt,
                 ))?,
             ));
-            files.push(("stick_slip.svg".to_string(), stick_map(st, x, y, stick)?));
+            files.push(("stick_slip.svg".to_string(), stick_map((st, sub), x, y, stick)?));
+            // Sections along x through the row nearest the centre, beside the closed forms
+            // evaluated on that same row.
+            let j0 = (0..y.len()).min_by(|&a, &b| y[a].abs().total_cmp(&y[b].abs())).unwrap_or(0);
+            let (x0, x1, y0) = (x[0], x[x.len() - 1], y[j0]);
+            let at = format!("section y = {}", eng_near(y0, x1.abs().max(x0.abs()), 1e-10, "m"));
+            for (file, name, row, r) in [
+                ("pressure_section.svg", "p", &pt[j0], refs.pressure.as_ref()),
+                ("traction_section.svg", "|q|", &qt[j0], refs.traction.as_ref()),
+            ] {
+                if name == "|q|" && row.iter().all(|v| *v == 0.0) {
+                    continue;
+                }
+                let reference = r.map(|r| (r.label, sample(r, x0, x1, y0)));
+                let mut curves =
+                    vec![Curve { dashed: false, label: name, x, y: row, colour: blue }];
+                if let Some((label, (rx, ry))) = &reference {
+                    curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+                }
+                files.push((
+                    file.to_string(),
+                    line_chart(
+                        (&format!("{st}: {name}, {at}"), sub),
+                        x_m,
+                        (name, "Pa"),
+                        &curves,
+                        &[],
+                    )?,
+                ));
+            }
         }
         _ => {}
     }
@@ -676,6 +767,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 format!("field_{name}.svg"),
                 heat_map(&Map {
                     title: format!("{st}: subsurface {name}"),
+                    sub,
                     name,
                     base: "Pa",
                     x: &f.x,
@@ -705,7 +797,11 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 files.push((
                     format!("field_{name}_xz.svg"),
                     heat_map(&Map {
-                        title: format!("{st}: {name}, section y = {}", eng(v.y[j0], "m")),
+                        title: format!(
+                            "{st}: {name}, section y = {}",
+                            eng_near(v.y[j0], v.x[0].abs().max(v.x[nx - 1].abs()), 1e-10, "m")
+                        ),
+                        sub,
                         name,
                         base: "Pa",
                         x: &v.x,
@@ -724,7 +820,11 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 files.push((
                     format!("field_{name}_yz.svg"),
                     heat_map(&Map {
-                        title: format!("{st}: {name}, section x = {}", eng(v.x[i0], "m")),
+                        title: format!(
+                            "{st}: {name}, section x = {}",
+                            eng_near(v.x[i0], v.y[0].abs().max(v.y[ny - 1].abs()), 1e-10, "m")
+                        ),
+                        sub,
                         name,
                         base: "Pa",
                         x: &v.y,
@@ -739,13 +839,24 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
         }
     }
     if let Some(c) = &out.cycle {
+        let mut curves =
+            vec![Curve { dashed: false, label: "result", x: &c.delta, y: &c.t, colour: blue }];
+        if let Some((rx, ry)) = &refs.cycle {
+            curves.push(Curve {
+                dashed: true,
+                label: "Mindlin-Deresiewicz",
+                x: rx,
+                y: ry,
+                colour: grey,
+            });
+        }
         files.push((
             "cycle.svg".to_string(),
             line_chart(
-                &format!("{st}: Mindlin-Deresiewicz loop"),
+                (&format!("{st}: hysteresis loop"), sub),
                 ("relative displacement", "m"),
                 ("T", "N"),
-                &[Curve { label: "loop", x: &c.delta, y: &c.t, colour: blue }],
+                &curves,
                 &[],
             )?,
         ));
