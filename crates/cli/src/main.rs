@@ -52,8 +52,8 @@ use stickslip_scene::{
 };
 
 mod completions;
-mod wrap;
 mod new;
+mod wrap;
 
 /// The exit statuses, shown by `--help` and `run --help` (a macro so that `concat!` can
 /// append them to a subcommand's examples).

@@ -104,7 +104,10 @@ mod tests {
         assert!(lines.iter().all(|l| l.chars().count() <= 40), "{w}");
         assert!(lines[1..].iter().all(|l| l.starts_with("       word")), "{w}");
         // nothing lost, nothing added but line breaks and indents
-        assert_eq!(w.split_whitespace().collect::<Vec<_>>(), t.split_whitespace().collect::<Vec<_>>());
+        assert_eq!(
+            w.split_whitespace().collect::<Vec<_>>(),
+            t.split_whitespace().collect::<Vec<_>>()
+        );
     }
 
     #[test]

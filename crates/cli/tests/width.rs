@@ -1,6 +1,6 @@
 //! Every line `explain` prints for the shipped scenes, and every line of a set of error
-//! messages, fits an 80-column terminal. The one exception is a line whose overflow is a
-//! single unbreakable token (a path): it is allowed, and printed so that it is seen.
+//! messages, fits an 80-column terminal. The one exception is a line that a long path (an
+//! unbreakable token of more than 40 columns) pushes past column 80.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -22,7 +22,8 @@ fn too_wide(text: &str) -> Vec<String> {
         .filter(|l| l.chars().count() > WIDTH)
         .filter(|l| {
             let indent = l.chars().take_while(|c| *c == ' ').count();
-            // unbreakable: the token that crosses column 80 could not fit on a line of its own
+            // allowed: the token that crosses column 80 is a path longer than half the width
+            // (moving it to a line of its own would not make that line fit either)
             let mut col = 0;
             let mut crossing = None;
             for (k, w) in l.split(' ').enumerate() {
@@ -33,7 +34,7 @@ fn too_wide(text: &str) -> Vec<String> {
                 col = end + 1;
             }
             match crossing {
-                Some((_, w)) => indent + w.chars().count() <= WIDTH || !w.contains('/'),
+                Some((_, w)) => !(w.contains('/') && indent + w.chars().count() > WIDTH / 2),
                 None => true,
             }
         })
