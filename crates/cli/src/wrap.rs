@@ -51,9 +51,13 @@ fn wrap_line(line: &str, width: usize, out: &mut String) {
         }
         let floor = if first { indent } else { indent + 1 };
         // the last space that leaves the line within the width, past the indent
-        let cut = (floor..=width).rev().find(|&k| cur[k] == ' ').or_else(|| {
+        // (not before punctuation, which belongs with the word before it)
+        let breakable = |k: usize| {
+            cur[k] == ' ' && !matches!(cur.get(k + 1), Some(':' | ';' | ',' | '.' | ')'))
+        };
+        let cut = (floor..=width).rev().find(|&k| breakable(k)).or_else(|| {
             // an unbreakable token: break at the first space after it
-            (width..cur.len()).find(|&k| cur[k] == ' ')
+            (width..cur.len()).find(|&k| breakable(k))
         });
         let Some(cut) = cut else {
             out.extend(cur.iter());
@@ -116,6 +120,12 @@ mod tests {
         assert!(w.lines().skip(1).all(|l| l.starts_with("                    m")), "{w}");
         let w = wrap(&format!("  hint: {}", "use a larger radius ".repeat(6)), 50);
         assert!(w.lines().skip(1).all(|l| l.starts_with("        ")), "{w}");
+    }
+
+    #[test]
+    fn punctuation_stays_with_its_word() {
+        let w = wrap(&format!("{} 30000 : the contact slides", "x".repeat(70)), 78);
+        assert!(w.lines().all(|l| !l.trim_start().starts_with(':')), "{w}");
     }
 
     #[test]
