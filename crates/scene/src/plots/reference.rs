@@ -126,20 +126,42 @@ fn contact(r: &ContactRecipe, out: &Outcome) -> References {
             let Ok(h) = HertzEllipse::new(rx, ry, force, e_star) else { return refs };
             let (ax, ay) = (h.semi_axis_x(), h.semi_axis_y());
             refs.pressure = reference("Hertz", move |x, y| h.pressure(x, y));
-            if let Some(Tangential::Cattaneo { force: q, along_x }) = r.tangential {
-                // the first semi-axis is the one along the load
-                let (al, ac) = if along_x { (ax, ay) } else { (ay, ax) };
-                if let Ok(c) = Cattaneo::new(al, ac, force, r.friction, q.magnitude) {
-                    refs.traction = reference("Cattaneo", move |x, y| {
-                        let (u, v) = if along_x { (x, y) } else { (y, x) };
-                        c.traction(u, v).abs()
-                    });
-                }
-            }
+            refs.traction = cattaneo(r, ax, ay, force);
+        }
+        ContactNormal::EllipseGiven { a, b, force } => {
+            refs.traction = cattaneo(r, a, b, force);
         }
         _ => {}
     }
     refs
+}
+
+/// Cattaneo's traction magnitude on the Hertz ellipse of semi-axes `ax`, `ay` under the
+/// normal force `force`, when a tangential force alone acts along one of the axes.
+fn cattaneo(r: &ContactRecipe, ax: f64, ay: f64, force: f64) -> Option<Reference> {
+    let (q, along_x) = match r.tangential {
+        Some(Tangential::Cattaneo { force: q, along_x }) => (q, along_x),
+        Some(Tangential::Grid(g)) if g.moment.is_none() => {
+            let q = g.force?;
+            // along an axis to rounding: the direction is a multiple of pi/2
+            let k = q.direction / std::f64::consts::FRAC_PI_2;
+            if (k - k.round()).abs() > 1e-12 {
+                return None;
+            }
+            (q, (k.round() as i64) % 2 == 0)
+        }
+        _ => return None,
+    };
+    if !(q.magnitude > 0.0 && r.friction > 0.0) {
+        return None;
+    }
+    // the first semi-axis is the one along the load
+    let (al, ac) = if along_x { (ax, ay) } else { (ay, ax) };
+    let c = Cattaneo::new(al, ac, force, r.friction, q.magnitude).ok()?;
+    reference("Cattaneo", move |x, y| {
+        let (u, v) = if along_x { (x, y) } else { (y, x) };
+        c.traction(u, v).abs()
+    })
 }
 
 /// The scene's key parameters for a plot's subtitle: radius, load, friction, tangential
@@ -195,4 +217,104 @@ pub(crate) fn key_parameters(plan: Option<&Plan>, out: &Outcome) -> String {
         parts.push(format!("M = {}", eng(fo.moment, moment)));
     }
     parts.join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{of, References};
+    use crate::{Outcome, Plan, RunOptions, Scene};
+
+    fn run(name: &str) -> (References, Outcome) {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../scenes")
+            .join(format!("{name}.toml"));
+        let plan = Plan::new(&Scene::from_file(&path).unwrap()).unwrap();
+        let out = plan.execute(&RunOptions::default()).unwrap();
+        (of(&plan, &out), out)
+    }
+
+    fn labels(r: &References) -> (Option<&str>, Option<&str>, bool) {
+        (
+            r.pressure.as_ref().map(|r| r.label),
+            r.traction.as_ref().map(|r| r.label),
+            r.cycle.is_some(),
+        )
+    }
+
+    /// ∫ f over (-a, a) by the midpoint rule in x = a sin θ (the square-root edges of the
+    /// contact closed forms become smooth).
+    fn line_integral(f: impl Fn(f64) -> f64, a: f64, n: usize) -> f64 {
+        let h = std::f64::consts::PI / n as f64;
+        (0..n)
+            .map(|k| {
+                let t = -std::f64::consts::FRAC_PI_2 + (k as f64 + 0.5) * h;
+                f(a * t.sin()) * a * t.cos() * h
+            })
+            .sum()
+    }
+
+    /// ∫ 2 π r f(r) dr over (0, a) by the midpoint rule in r = a sin θ, θ in (0, π/2)
+    /// (second order: the error is O(n⁻²)).
+    fn disc_integral(f: impl Fn(f64) -> f64, a: f64, n: usize) -> f64 {
+        let h = std::f64::consts::FRAC_PI_2 / n as f64;
+        (0..n)
+            .map(|k| {
+                let t = (k as f64 + 0.5) * h;
+                let r = a * t.sin();
+                2.0 * std::f64::consts::PI * r * f(r) * a * t.cos() * h
+            })
+            .sum()
+    }
+
+    fn rel(a: f64, b: f64) -> f64 {
+        (a - b).abs() / b.abs()
+    }
+
+    /// A reference is drawn in its own case only, and it carries the scene's load: its
+    /// integral over the contact is the normal (or tangential) load of the result, an
+    /// equilibrium identity between the closed form and the solver's resultants.
+    #[test]
+    fn references_only_in_their_cases_and_in_equilibrium() {
+        let (r, out) = run("hertz_cylinder_cattaneo");
+        assert_eq!(labels(&r), (Some("Hertz"), Some("Cattaneo-Mindlin"), false));
+        let a = out.contact.a;
+        let p = r.pressure.as_ref().unwrap();
+        let q = r.traction.as_ref().unwrap();
+        let e = rel(line_integral(|x| (p.at)(x, 0.0), a, 4000), out.contact.normal_load);
+        assert!(e < 1e-9, "2D Hertz: integral of p off the load by {e:.2e}");
+        let e = rel(line_integral(|x| (q.at)(x, 0.0), a, 4000), out.forces.tangential);
+        assert!(e < 1e-5, "2D Cattaneo-Mindlin: integral of q off the load by {e:.2e}");
+
+        let (r, out) = run("carter_steel_rolling");
+        assert_eq!(labels(&r), (Some("Hertz"), Some("Carter"), false));
+        let a = out.contact.a;
+        let q = r.traction.as_ref().unwrap();
+        let e = rel(line_integral(|x| (q.at)(x, 0.0), a, 4000), out.forces.tangential);
+        assert!(e < 1e-5, "Carter: integral of q off the creep force by {e:.2e}");
+
+        // a numerical grid solver (the LP) under a force on a sphere: Mindlin beside it
+        let (r, out) = run("seed002_ex1_lp");
+        assert_eq!(labels(&r), (Some("Hertz"), Some("Mindlin"), false));
+        let a = out.contact.a;
+        let p = r.pressure.as_ref().unwrap();
+        let q = r.traction.as_ref().unwrap();
+        let e = rel(disc_integral(|x| (p.at)(x, 0.0), a, 100_000), out.contact.normal_load);
+        assert!(e < 1e-9, "Hertz sphere: integral of p off the load by {e:.2e}");
+        let e = rel(disc_integral(|x| (q.at)(x, 0.0), a, 100_000), out.forces.tangential.abs());
+        assert!(e < 1e-5, "Mindlin: integral of q off the tangential load by {e:.2e}");
+
+        let (r, out) = run("sphere_load_cycle");
+        assert_eq!(labels(&r).2, true);
+        let (_, t) = r.cycle.as_ref().unwrap();
+        let amp = out.cycle.as_ref().unwrap().amplitude;
+        let top = t.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        assert!(rel(top, amp) < 1e-12, "the loop reaches T* = {amp}, not {top}");
+
+        // not the closed-form case: a surface, a graded substrate, a viscoelastic roller
+        for name in ["sphere_as_surface", "graded_roller_partial_slip", "seed001_goryacheva_rubber"]
+        {
+            let (r, _) = run(name);
+            assert_eq!(labels(&r), (None, None, false), "{name}");
+        }
+    }
 }
