@@ -71,7 +71,7 @@ fn wrap_line(line: &str, width: usize, out: &mut String) {
         if tail.is_empty() {
             return;
         }
-        cur = std::iter::repeat(' ').take(indent).chain(tail).collect();
+        cur = std::iter::repeat_n(' ', indent).chain(tail).collect();
         first = false;
     }
 }
