@@ -304,7 +304,7 @@ mod tests {
         assert!(e < 1e-5, "Mindlin: integral of q off the tangential load by {e:.2e}");
 
         let (r, out) = run("sphere_load_cycle");
-        assert_eq!(labels(&r).2, true);
+        assert!(labels(&r).2);
         let (_, t) = r.cycle.as_ref().unwrap();
         let amp = out.cycle.as_ref().unwrap().amplitude;
         let top = t.iter().fold(0.0f64, |m, v| m.max(v.abs()));
