@@ -357,14 +357,36 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
         }
         s.push_str("</ul>\n");
     }
-    // The validated scene, every quantity converted to SI.
+    // The keys of the file as a table: as given, in SI, and where the value came from.
+    if let Some(table) = sc.source.as_ref().and_then(|src| src.text().parse::<toml::Table>().ok()) {
+        let mut rows = Vec::new();
+        given_rows("", &toml::Value::Table(table), &mut rows);
+        s.push_str(
+            "<h3>As resolved</h3>\n<table>\n<tr><th>key</th><th>as given</th>\
+             <th>value (SI)</th><th>from</th></tr>\n",
+        );
+        for (key, given, si) in &rows {
+            let _ = writeln!(
+                s,
+                "<tr><td><code>{}</code></td><td>{}</td><td class=\"num\">{}</td><td>given</td></tr>",
+                esc(key),
+                esc(given),
+                esc(si)
+            );
+        }
+        s.push_str(
+            "</table>\n<p>Every key the file leaves out takes its default (docs/SCENES.md); \
+             the validated scene below shows them all.</p>\n",
+        );
+    }
+    // The validated scene, every quantity converted to SI, defaults included.
     let resolved = Scene { source: None, ..sc.clone() };
     let _ = writeln!(
         s,
-        "<h3>As resolved</h3>\n<p>Every quantity in SI units: lengths in m, moduli and stresses \
+        "<details><summary>The validated scene with its defaults</summary>\n<p>Every quantity in SI units: lengths in m, moduli and stresses \
          in Pa, forces in N (N/m in 2D), speeds in m/s, times in s, angles in rad (in degrees \
          where the name ends in <code>_deg</code>); a field grid with <code>scale: HalfWidth</code> \
-         is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>",
+         is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>\n</details>",
         esc(&format!(
             "geometry: {:#?}\nsubstrate: {:#?}\nindenter: {:#?}\nload: {:#?}\nmotion: {:#?}\noutputs: {:#?}\nsolver: {:#?}",
             resolved.geometry,
@@ -376,6 +398,84 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
             resolved.solver
         ))
     );
+}
+
+/// A quantity string ("20 mm", "210 GPa") in SI: the value and the SI unit (Pa for a
+/// stress); None when `text` is not a number with a known unit.
+fn si_quantity(text: &str) -> Option<(f64, String)> {
+    let t = text.trim();
+    // the number is the longest prefix that parses, as the scene reader takes it
+    let (num, unit) = (1..=t.len())
+        .rev()
+        .filter(|&k| t.is_char_boundary(k))
+        .find_map(|k| t[..k].trim().parse::<f64>().ok().map(|v| (v, t[k..].trim())))?;
+    if unit.is_empty() {
+        return Some((num, String::new()));
+    }
+    let (factor, dim) = crate::units::parse_unit(unit, t).ok()?;
+    let u = match dim.to_string().as_str() {
+        "N/m^2" => "Pa".to_string(),
+        "1 (dimensionless)" => String::new(),
+        d => d.to_string(),
+    };
+    Some((num * factor, u))
+}
+
+/// A number as the SI column shows it: plain between 1e-3 and 1e6, else with an exponent.
+fn si_number(v: f64) -> String {
+    if v == 0.0 || (1e-3..1e6).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+/// Every leaf of the scene file `v` under the dotted key `key`: (key, as given, in SI).
+fn given_rows(key: &str, v: &toml::Value, rows: &mut Vec<(String, String, String)>) {
+    let join = |k: &str| if key.is_empty() { k.to_string() } else { format!("{key}.{k}") };
+    let scalar = |v: &toml::Value| -> Option<(String, String)> {
+        match v {
+            toml::Value::String(t) => Some((
+                t.clone(),
+                si_quantity(t).map_or_else(
+                    || t.clone(),
+                    |(x, u)| format!("{} {u}", si_number(x)).trim_end().to_string(),
+                ),
+            )),
+            toml::Value::Float(x) => Some((v.to_string(), si_number(*x))),
+            toml::Value::Integer(_) | toml::Value::Boolean(_) | toml::Value::Datetime(_) => {
+                Some((v.to_string(), v.to_string()))
+            }
+            _ => None,
+        }
+    };
+    match v {
+        toml::Value::Table(t) => {
+            for (k, x) in t {
+                given_rows(&join(k), x, rows);
+            }
+        }
+        toml::Value::Array(a) => {
+            let parts: Option<Vec<(String, String)>> = a.iter().map(scalar).collect();
+            match parts {
+                Some(p) => rows.push((
+                    key.to_string(),
+                    format!("[{}]", p.iter().map(|x| x.0.as_str()).collect::<Vec<_>>().join(", ")),
+                    format!("[{}]", p.iter().map(|x| x.1.as_str()).collect::<Vec<_>>().join(", ")),
+                )),
+                None => {
+                    for (i, x) in a.iter().enumerate() {
+                        given_rows(&format!("{key}[{i}]"), x, rows);
+                    }
+                }
+            }
+        }
+        _ => {
+            if let Some((g, si)) = scalar(v) {
+                rows.push((key.to_string(), g, si));
+            }
+        }
+    }
 }
 
 fn audit(s: &mut String, out: &Outcome) {
@@ -435,7 +535,15 @@ fn solver(s: &mut String, out: &Outcome) {
 
 #[cfg(test)]
 mod tests {
-    use super::{eng, eng_near, esc};
+    use super::{eng, eng_near, esc, si_quantity};
+
+    #[test]
+    fn quantities_in_si() {
+        assert_eq!(si_quantity("20 mm"), Some((0.02, "m".to_string())));
+        assert_eq!(si_quantity("210 GPa"), Some((210e9, "Pa".to_string())));
+        assert_eq!(si_quantity("0.3"), Some((0.3, String::new())));
+        assert_eq!(si_quantity("cylinder"), None);
+    }
 
     #[test]
     fn near_zero_prints_zero_in_the_scale_unit() {
