@@ -53,6 +53,7 @@ use stickslip_scene::{
 
 mod completions;
 mod new;
+mod wrap;
 
 /// The exit statuses, shown by `--help` and `run --help` (a macro so that `concat!` can
 /// append them to a subcommand's examples).
@@ -200,7 +201,7 @@ fn emit(text: &str) -> Result<(), Failure> {
 
 /// A line on stderr; a failing stderr is ignored (there is nowhere left to report it).
 fn note(text: &str) {
-    let _ = writeln!(std::io::stderr(), "{text}");
+    let _ = writeln!(std::io::stderr(), "{}", wrap::wrap(text, wrap::WIDTH));
 }
 
 fn load(scene: Option<&PathBuf>) -> Result<Scene, SceneError> {
@@ -428,7 +429,7 @@ fn solver_line(s: &SolverOut) -> String {
 fn cmd_explain(scene: Option<&PathBuf>) -> Result<(), Failure> {
     let scene = load(scene)?;
     let plan = Plan::new(&scene)?;
-    emit(&plan.explain())
+    emit(&wrap::wrap(&plan.explain(), wrap::WIDTH))
 }
 
 /// `reproduce`: the verification pages of stickslip-verification.

@@ -21,8 +21,10 @@ fn out(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
+/// Standard error with the lines the program wrapped to 80 columns joined again (every run
+/// of white space is one space), so that a phrase is found wherever the line broke.
 fn err(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
+    String::from_utf8_lossy(&o.stderr).split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
 fn kinds() -> Vec<String> {

@@ -223,7 +223,7 @@ pub(crate) fn render(
         files.push(("load_curve.csv".to_string(), std::mem::take(&mut s)));
     }
     let svgs = if plots {
-        crate::plots::render(out).map_err(|e| {
+        crate::plots::render(out, ctx.map(|c| c.plan)).map_err(|e| {
             SceneError::new(ErrorKind::Io, format!("cannot draw the plots: {e}"))
                 .hint("run without outputs.plots; nothing was written or changed")
         })?

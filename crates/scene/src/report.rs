@@ -43,7 +43,11 @@ pub(crate) fn eng(v: f64, unit: &str) -> String {
     if v == 0.0 {
         return format!("0 {unit}");
     }
-    let e3 = ((v.abs().log10() / 3.0).floor() as i32).clamp(-5, 3);
+    let e3 = ((v.abs().log10() / 3.0).floor() as i32).min(3);
+    if e3 < -5 {
+        // Below a femto-unit no prefix reads well; zero-like values go through `eng_near`.
+        return format!("{v:.3e} {unit}");
+    }
     let prefix = match e3 {
         -5 => "f",
         -4 => "p",
@@ -64,6 +68,46 @@ pub(crate) fn eng(v: f64, unit: &str) -> String {
         3
     };
     format!("{m:.digits$} {prefix}{unit}")
+}
+
+/// The SI prefix and divisor that `eng` gives a value of magnitude `v`.
+fn prefix_of(v: f64) -> (&'static str, f64) {
+    if !(v.is_finite() && v > 0.0) {
+        return ("", 1.0);
+    }
+    let e3 = ((v.log10() / 3.0).floor() as i32).clamp(-5, 3);
+    let prefix = ["f", "p", "n", "µ", "m", "", "k", "M", "G"][(e3 + 5) as usize];
+    (prefix, 10f64.powi(3 * e3))
+}
+
+/// `v` as [`eng`] writes it, except that a value within `tol` times `scale` of zero (the
+/// result's own tolerance relative to the quantity's scale: rounding, or what the solver did
+/// not resolve) is written as 0 in the scale's unit: `eng_near(3e-17, 1e3, 1e-10, "N")` is
+/// "0 kN", not "30.00 aN" or "3.000e-17 N".
+pub(crate) fn eng_near(v: f64, scale: f64, tol: f64, unit: &str) -> String {
+    if v.is_finite() && v.abs() <= tol * scale.abs() {
+        return format!("0 {}{unit}", prefix_of(scale.abs()).0);
+    }
+    eng(v, unit)
+}
+
+/// The relative tolerance below which a result's value is zero: the grid solver's tolerance
+/// when one ran, else 1e-10 (closed forms and quadratures: well below their accuracy and far
+/// above rounding of quantities near 1).
+fn zero_tolerance(ctx: Option<ReportContext<'_>>) -> f64 {
+    use crate::plan::recipe::{ContactNormal, Recipe, Tangential};
+    let fallback = 1e-10;
+    let Some(Recipe::Contact(r)) = ctx.map(|c| &c.plan.recipe) else { return fallback };
+    let grid = match r.tangential {
+        Some(Tangential::Grid(g)) => g.tolerance,
+        Some(Tangential::Rolling(g)) => g.tolerance,
+        _ => 0.0,
+    };
+    let normal = match &r.normal {
+        ContactNormal::Surface { tolerance, .. } => *tolerance,
+        _ => 0.0,
+    };
+    grid.max(normal).max(fallback)
 }
 
 const STYLE: &str = "body{font-family:sans-serif;max-width:1100px;margin:1.5em auto;padding:0 1em;color:#222;line-height:1.4}\
@@ -131,6 +175,10 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
     };
     s.push_str("<h2 id=\"results\">Key results</h2>\n<table>\n");
     let c = &out.contact;
+    let tol = zero_tolerance(ctx);
+    // The scales of forces, moments and lengths: the normal load, its moment arm a, and a.
+    let (fs, ls) = (c.normal_load, c.a.max(c.b));
+    let near = |v: f64, scale: f64, unit: &str| eng_near(v, scale, tol, unit);
     row(s, "contact half-width a", &eng(c.a, "m"));
     row(s, "contact half-width b", &eng(c.b, "m"));
     row(s, "peak pressure p0", &eng(c.p0, "Pa"));
@@ -146,20 +194,20 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
     }
     let fo = &out.forces;
     row(s, "normal force", &eng(fo.normal, f));
-    row(s, "tangential force", &eng(fo.tangential, f));
-    row(s, "moment", &eng(fo.moment, m));
-    row(s, "rolling moment", &eng(fo.rolling_moment, m));
+    row(s, "tangential force", &near(fo.tangential, fs, f));
+    row(s, "moment", &near(fo.moment, fs * ls, m));
+    row(s, "rolling moment", &near(fo.rolling_moment, fs * ls, m));
     for (name, v, u) in [("creep force Fx", fo.fx, "N"), ("creep force Fy", fo.fy, "N")] {
         if let Some(v) = v {
-            row(s, name, &eng(v, u));
+            row(s, name, &near(v, fs, u));
         }
     }
     if let Some(mz) = fo.mz {
-        row(s, "spin moment Mz", &eng(mz, "N m"));
+        row(s, "spin moment Mz", &near(mz, fs * ls, "N m"));
     }
     let r = &out.rigid_displacement;
     if let Some(t) = r.tangential {
-        row(s, "rigid tangential displacement", &eng(t, "m"));
+        row(s, "rigid tangential displacement", &near(t, ls, "m"));
     }
     if let Some(t) = r.rotation {
         row(s, "rigid rotation", &format!("{t:.4e} rad"));
@@ -170,7 +218,7 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
             "none".to_string()
         } else {
             v.iter()
-                .map(|p| format!("[{}, {}]", eng(p[0], "m"), eng(p[1], "m")))
+                .map(|p| format!("[{}, {}]", near(p[0], ls, "m"), near(p[1], ls, "m")))
                 .collect::<Vec<_>>()
                 .join(", ")
         }
@@ -207,9 +255,9 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
                 &format!(
                     "{} at ({}, {}, {})",
                     eng(p.value, "Pa"),
-                    eng(p.x, "m"),
-                    eng(p.y, "m"),
-                    eng(p.z, "m")
+                    near(p.x, ls, "m"),
+                    near(p.y, ls, "m"),
+                    near(p.z, ls, "m")
                 ),
             );
         }
@@ -309,14 +357,36 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
         }
         s.push_str("</ul>\n");
     }
-    // The validated scene, every quantity converted to SI.
+    // The keys of the file as a table: as given, in SI, and where the value came from.
+    if let Some(table) = sc.source.as_ref().and_then(|src| src.text().parse::<toml::Table>().ok()) {
+        let mut rows = Vec::new();
+        given_rows("", &toml::Value::Table(table), &mut rows);
+        s.push_str(
+            "<h3>As resolved</h3>\n<table>\n<tr><th>key</th><th>as given</th>\
+             <th>value (SI)</th><th>from</th></tr>\n",
+        );
+        for (key, given, si) in &rows {
+            let _ = writeln!(
+                s,
+                "<tr><td><code>{}</code></td><td>{}</td><td class=\"num\">{}</td><td>given</td></tr>",
+                esc(key),
+                esc(given),
+                esc(si)
+            );
+        }
+        s.push_str(
+            "</table>\n<p>Every key the file leaves out takes its default (docs/SCENES.md); \
+             the validated scene below shows them all.</p>\n",
+        );
+    }
+    // The validated scene, every quantity converted to SI, defaults included.
     let resolved = Scene { source: None, ..sc.clone() };
     let _ = writeln!(
         s,
-        "<h3>As resolved</h3>\n<p>Every quantity in SI units: lengths in m, moduli and stresses \
+        "<details><summary>The validated scene with its defaults</summary>\n<p>Every quantity in SI units: lengths in m, moduli and stresses \
          in Pa, forces in N (N/m in 2D), speeds in m/s, times in s, angles in rad (in degrees \
          where the name ends in <code>_deg</code>); a field grid with <code>scale: HalfWidth</code> \
-         is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>",
+         is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>\n</details>",
         esc(&format!(
             "geometry: {:#?}\nsubstrate: {:#?}\nindenter: {:#?}\nload: {:#?}\nmotion: {:#?}\noutputs: {:#?}\nsolver: {:#?}",
             resolved.geometry,
@@ -328,6 +398,84 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
             resolved.solver
         ))
     );
+}
+
+/// A quantity string ("20 mm", "210 GPa") in SI: the value and the SI unit (Pa for a
+/// stress); None when `text` is not a number with a known unit.
+fn si_quantity(text: &str) -> Option<(f64, String)> {
+    let t = text.trim();
+    // the number is the longest prefix that parses, as the scene reader takes it
+    let (num, unit) = (1..=t.len())
+        .rev()
+        .filter(|&k| t.is_char_boundary(k))
+        .find_map(|k| t[..k].trim().parse::<f64>().ok().map(|v| (v, t[k..].trim())))?;
+    if unit.is_empty() {
+        return Some((num, String::new()));
+    }
+    let (factor, dim) = crate::units::parse_unit(unit, t).ok()?;
+    let u = match dim.to_string().as_str() {
+        "N/m^2" => "Pa".to_string(),
+        "1 (dimensionless)" => String::new(),
+        d => d.to_string(),
+    };
+    Some((num * factor, u))
+}
+
+/// A number as the SI column shows it: plain between 1e-3 and 1e6, else with an exponent.
+fn si_number(v: f64) -> String {
+    if v == 0.0 || (1e-3..1e6).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+/// Every leaf of the scene file `v` under the dotted key `key`: (key, as given, in SI).
+fn given_rows(key: &str, v: &toml::Value, rows: &mut Vec<(String, String, String)>) {
+    let join = |k: &str| if key.is_empty() { k.to_string() } else { format!("{key}.{k}") };
+    let scalar = |v: &toml::Value| -> Option<(String, String)> {
+        match v {
+            toml::Value::String(t) => Some((
+                t.clone(),
+                si_quantity(t).map_or_else(
+                    || t.clone(),
+                    |(x, u)| format!("{} {u}", si_number(x)).trim_end().to_string(),
+                ),
+            )),
+            toml::Value::Float(x) => Some((v.to_string(), si_number(*x))),
+            toml::Value::Integer(_) | toml::Value::Boolean(_) | toml::Value::Datetime(_) => {
+                Some((v.to_string(), v.to_string()))
+            }
+            _ => None,
+        }
+    };
+    match v {
+        toml::Value::Table(t) => {
+            for (k, x) in t {
+                given_rows(&join(k), x, rows);
+            }
+        }
+        toml::Value::Array(a) => {
+            let parts: Option<Vec<(String, String)>> = a.iter().map(scalar).collect();
+            match parts {
+                Some(p) => rows.push((
+                    key.to_string(),
+                    format!("[{}]", p.iter().map(|x| x.0.as_str()).collect::<Vec<_>>().join(", ")),
+                    format!("[{}]", p.iter().map(|x| x.1.as_str()).collect::<Vec<_>>().join(", ")),
+                )),
+                None => {
+                    for (i, x) in a.iter().enumerate() {
+                        given_rows(&format!("{key}[{i}]"), x, rows);
+                    }
+                }
+            }
+        }
+        _ => {
+            if let Some((g, si)) = scalar(v) {
+                rows.push((key.to_string(), g, si));
+            }
+        }
+    }
 }
 
 fn audit(s: &mut String, out: &Outcome) {
@@ -387,7 +535,26 @@ fn solver(s: &mut String, out: &Outcome) {
 
 #[cfg(test)]
 mod tests {
-    use super::{eng, esc};
+    use super::{eng, eng_near, esc, si_quantity};
+
+    #[test]
+    fn quantities_in_si() {
+        assert_eq!(si_quantity("20 mm"), Some((0.02, "m".to_string())));
+        assert_eq!(si_quantity("210 GPa"), Some((210e9, "Pa".to_string())));
+        assert_eq!(si_quantity("0.3"), Some((0.3, String::new())));
+        assert_eq!(si_quantity("cylinder"), None);
+    }
+
+    #[test]
+    fn near_zero_prints_zero_in_the_scale_unit() {
+        assert_eq!(eng_near(3e-17, 1e3, 1e-10, "N"), "0 kN");
+        assert_eq!(eng_near(-1e-30, 2.5e-4, 1e-10, "m"), "0 µm");
+        assert_eq!(eng_near(0.0, 0.0, 1e-10, "N"), "0 N");
+        // above the tolerance: the value itself
+        assert_eq!(eng_near(2e-6, 1e3, 1e-10, "N"), "2.000 µN");
+        // never a femto-prefixed zero: tiny values without a scale keep their exponent
+        assert_eq!(eng(1e-30, "N"), "1.000e-30 N");
+    }
 
     #[test]
     fn engineering_prefixes() {

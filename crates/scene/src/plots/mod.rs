@@ -1,10 +1,15 @@
 //! SVG plots of an outcome (plotters, SVG backend), rendered to strings so that nothing is
 //! written before every plot has been drawn.
 
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::prelude::*;
 
+mod contour;
+mod reference;
+
 use crate::exec::outcome::{Outcome, SurfaceOut};
-use crate::report::eng;
+use crate::plan::Plan;
+use crate::report::eng_near;
 
 type PlotResult = Result<String, String>;
 
@@ -14,6 +19,8 @@ struct Curve<'a> {
     x: &'a [f64],
     y: &'a [f64],
     colour: RGBColor,
+    /// A closed-form reference, drawn dashed.
+    dashed: bool,
 }
 
 fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -89,8 +96,22 @@ fn tick(v: f64, span: f64) -> String {
     }
 }
 
-fn line_chart(
+/// `area` below a title line and, when `sub` is not empty, a smaller line of key parameters.
+fn titled<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
     title: &str,
+    sub: &str,
+) -> Result<DrawingArea<DB, plotters::coord::Shift>, String> {
+    let area = area.titled(title, ("sans-serif", 16)).map_err(err)?;
+    if sub.is_empty() {
+        Ok(area)
+    } else {
+        area.titled(sub, ("sans-serif", 13)).map_err(err)
+    }
+}
+
+fn line_chart(
+    (title, sub): (&str, &str),
     (xname, xbase): (&str, &str),
     (yname, ybase): (&str, &str),
     curves: &[Curve<'_>],
@@ -102,12 +123,12 @@ fn line_chart(
         curves.iter().map(|c| (xu.scale(c.x), yu.scale(c.y))).collect();
     let mut s = String::new();
     {
-        let root = SVGBackend::with_string(&mut s, (720, 440)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut s, (720, 460)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
+        let root = titled(&root, title, sub)?;
         let (x0, x1) = range(scaled.iter().flat_map(|c| c.0.iter().copied()));
         let (y0, y1) = range(scaled.iter().flat_map(|c| c.1.iter().copied()));
         let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 17))
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(70)
@@ -131,16 +152,29 @@ fn line_chart(
         }
         for (c, (x, y)) in curves.iter().zip(&scaled) {
             let col = c.colour;
-            chart
-                .draw_series(LineSeries::new(
-                    x.iter().copied().zip(y.iter().copied()),
-                    col.stroke_width(2),
-                ))
-                .map_err(err)?
-                .label(c.label)
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], col.stroke_width(2))
-                });
+            let pts = x.iter().copied().zip(y.iter().copied());
+            if c.dashed {
+                chart
+                    .draw_series(DashedLineSeries::new(pts, 7, 4, col.stroke_width(2)))
+                    .map_err(err)?
+                    .label(c.label)
+                    .legend(move |(x, y)| {
+                        plotters::element::DashedPathElement::new(
+                            vec![(x, y), (x + 18, y)],
+                            5,
+                            3,
+                            col.stroke_width(2),
+                        )
+                    });
+            } else {
+                chart
+                    .draw_series(LineSeries::new(pts, col.stroke_width(2)))
+                    .map_err(err)?
+                    .label(c.label)
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 18, y)], col.stroke_width(2))
+                    });
+            }
         }
         chart
             .configure_series_labels()
@@ -203,22 +237,76 @@ impl Scale {
     }
 }
 
-/// The colour bar of `scale` in `area`, labelled with the value's name and unit.
+/// A label of a contour level on a grid of round levels `step` apart: the decimals the step
+/// needs, no exponent, no "-0".
+fn level_label(v: f64, step: f64) -> String {
+    let decimals = (-step.abs().max(1e-300).log10().floor()).clamp(0.0, 9.0) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+/// A linear axis from `lo` to `hi` whose ticks are exactly `ticks` (the contour levels), for
+/// the colour bar. (plotters' own `with_key_points` does not take a label formatter.)
+struct LevelAxis {
+    lo: f64,
+    hi: f64,
+    ticks: Vec<f64>,
+}
+
+impl Ranged for LevelAxis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, v: &f64, limit: (i32, i32)) -> i32 {
+        let t = (v - self.lo) / (self.hi - self.lo);
+        limit.0 + (t * f64::from(limit.1 - limit.0)).round() as i32
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, _hint: Hint) -> Vec<f64> {
+        self.ticks.clone()
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+}
+
+/// Contour lines: thin, dark and half transparent so that the colours stay readable.
+fn contour_style() -> ShapeStyle {
+    RGBColor(20, 20, 20).mix(0.7).stroke_width(1)
+}
+
+/// The colour bar of `scale` in `area`, labelled with the value's name and unit. Its ticks
+/// are the contour levels `levels` (in the units of `units`, `step` apart), each marked
+/// with a contour-styled line across the bar, and the bar's ends where they are round.
 fn colour_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     scale: Scale,
     units: &Units,
     name: &str,
+    (step, levels): (f64, &[f64]),
 ) -> Result<(), String> {
     let (lo, hi) = scale.bounds();
     let (a, b) = (lo / units.div, hi / units.div);
     let (a, b) = if b > a { (a, b) } else { (a - 1.0, a + 1.0) };
+    let mut ticks = levels.to_vec();
+    let round = |v: f64| step > 0.0 && (v / step - (v / step).round()).abs() < 1e-9;
+    for end in [a, b] {
+        if round(end) {
+            ticks.push(end);
+        }
+    }
+    ticks.sort_by(f64::total_cmp);
     let mut bar = ChartBuilder::on(area)
         .margin_top(12)
         .margin_bottom(45)
         .margin_right(8)
         .y_label_area_size(60)
-        .build_cartesian_2d(0.0..1.0, a..b)
+        .build_cartesian_2d(0.0..1.0, LevelAxis { lo: a, hi: b, ticks })
         .map_err(|e| e.to_string())?;
     bar.configure_mesh()
         .disable_mesh()
@@ -226,7 +314,7 @@ fn colour_bar<DB: DrawingBackend>(
         .y_label_style(("sans-serif", 12))
         .axis_desc_style(("sans-serif", 13))
         .y_desc(units.desc(name))
-        .y_label_formatter(&|v| tick(*v, b - a))
+        .y_label_formatter(&|v| if step > 0.0 { level_label(*v, step) } else { tick(*v, b - a) })
         .draw()
         .map_err(|e| e.to_string())?;
     let n = 64;
@@ -235,6 +323,10 @@ fn colour_bar<DB: DrawingBackend>(
         let c = scale.colour(0.5 * (v0 + v1) * units.div);
         Rectangle::new([(0.0, v0), (1.0, v1)], c.filled())
     }))
+    .map_err(|e| e.to_string())?;
+    bar.draw_series(
+        levels.iter().map(|&l| PathElement::new(vec![(0.0, l), (1.0, l)], contour_style())),
+    )
     .map_err(|e| e.to_string())?;
     Ok(())
 }
@@ -317,6 +409,8 @@ fn coarse_rows(v: &[Vec<f64>], by: usize, bx: usize) -> Vec<Vec<f64>> {
 /// A map of `v[j][i]` (rows along y, columns along x) of the quantity `name` in `base` units.
 struct Map<'a> {
     title: String,
+    /// Key parameters, a second title line.
+    sub: &'a str,
     name: &'a str,
     base: &'a str,
     x: &'a [f64],
@@ -347,12 +441,12 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
     let (pw, ph) = equal_axes(xb - xa, yb - ya);
     // plot area + y labels (75) + margins; the colour bar takes 110 on the right.
     // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
-    let (w, h) = ((pw + 75 + 24 + 110).max(720), ph + 40 + 45 + 24);
+    let (w, h) = ((pw + 75 + 24 + 110).max(720), ph + 60 + 45 + 24);
     let mut s = String::new();
     {
         let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let root = root.titled(&m.title, ("sans-serif", 15)).map_err(err)?;
+        let root = titled(&root, &m.title, m.sub)?;
         let (left, rest) = root.split_horizontally(pw + 75 + 24);
         let (right, _) = rest.split_horizontally(110);
         let (sxa, sxb, sya, syb) = (xa / lu.div, xb / lu.div, ya / lu.div, yb / lu.div);
@@ -387,18 +481,31 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
                 )
             }))
             .map_err(err)?;
+        // Contours at the colour bar's round levels.
+        let (step, levels) =
+            contour::round_levels(scale.bounds().0 / vu.div, scale.bounds().1 / vu.div);
+        for &l in &levels {
+            for line in contour::iso_lines(x, y, v, l * vu.div) {
+                chart
+                    .draw_series(std::iter::once(PathElement::new(
+                        line.points.iter().map(|&(px, py)| (px / d, py / d)).collect::<Vec<_>>(),
+                        contour_style(),
+                    )))
+                    .map_err(err)?;
+            }
+        }
         chart
             .draw_series(m.outline.iter().map(|&[(x0, y0), (x1, y1)]| {
                 PathElement::new(vec![(x0 / d, y0 / d), (x1 / d, y1 / d)], WHITE.stroke_width(2))
             }))
             .map_err(err)?;
-        colour_bar(&right, scale, &vu, m.name)?;
+        colour_bar(&right, scale, &vu, m.name, (step, &levels))?;
         root.present().map_err(err)?;
     }
     Ok(s)
 }
 
-fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
+fn stick_map((title, sub): (&str, &str), x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
     let (bx, by) = (block(x.len()), block(y.len()));
     if bx > 1 || by > 1 {
         // A block sticks if most of its contact elements stick; outside if it has none.
@@ -427,7 +534,7 @@ fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult
                     .collect()
             })
             .collect();
-        return stick_map(title, &coarse_axis(x, bx), &coarse_axis(y, by), &merged);
+        return stick_map((title, sub), &coarse_axis(x, bx), &coarse_axis(y, by), &merged);
     }
     let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
     let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
@@ -439,12 +546,10 @@ fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult
     let mut s = String::new();
     {
         // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
-        let root = SVGBackend::with_string(&mut s, ((pw + 75 + 24).max(720), ph + 40 + 45 + 24))
+        let root = SVGBackend::with_string(&mut s, ((pw + 75 + 24).max(720), ph + 60 + 45 + 24))
             .into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let root = root
-            .titled(&format!("{title}: stick (blue), slip (red)"), ("sans-serif", 15))
-            .map_err(err)?;
+        let root = titled(&root, &format!("{title}: stick (blue), slip (red)"), sub)?;
         let (root, _) = root.split_horizontally(pw + 75 + 24);
         let (sxa, sxb, sya, syb) = (xa / d, xb / d, ya / d, yb / d);
         let mut chart = ChartBuilder::on(&root)
@@ -487,48 +592,78 @@ fn stick_map(title: &str, x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult
     Ok(s)
 }
 
-/// Every plot of `out` as (file name, SVG text). Titles start with the scene's title.
-pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
+/// `n` points from `a` to `b`.
+fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n).map(|k| a + (b - a) * k as f64 / (n - 1) as f64).collect()
+}
+
+/// A closed form sampled densely along x at the fixed y `y0`, as a dashed curve's data.
+fn sample(r: &reference::Reference, x0: f64, x1: f64, y0: f64) -> (Vec<f64>, Vec<f64>) {
+    let xs = linspace(x0, x1, 401);
+    let ys = xs.iter().map(|&x| (r.at)(x, y0)).collect();
+    (xs, ys)
+}
+
+/// Every plot of `out` as (file name, SVG text). Titles start with the scene's title, with
+/// the key parameters on a second line; the closed-form references of the planned scene
+/// (when `plan` is given) are drawn dashed.
+pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, String)>, String> {
     let mut files = Vec::new();
     let blue = RGBColor(40, 90, 200);
     let red = RGBColor(200, 60, 40);
+    let grey = RGBColor(40, 40, 40);
     let st = &out.title;
+    let sub = reference::key_parameters(plan, out);
+    let sub = sub.as_str();
+    let refs = plan.map(|p| reference::of(p, out)).unwrap_or_default();
     let x_m = ("x", "m");
     match &out.surface {
         SurfaceOut::Line { x, p, q, ux, uy, .. } if !x.is_empty() => {
+            let (x0, x1) = (x[0], x[x.len() - 1]);
+            let pref = refs.pressure.as_ref().map(|r| (r.label, sample(r, x0, x1, 0.0)));
+            let qref = refs.traction.as_ref().map(|r| (r.label, sample(r, x0, x1, 0.0)));
+            let mut curves = vec![Curve { dashed: false, label: "p", x, y: p, colour: blue }];
+            if let Some((label, (rx, ry))) = &pref {
+                curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+            }
             files.push((
                 "pressure.svg".to_string(),
                 line_chart(
-                    &format!("{st}: contact pressure"),
+                    (&format!("{st}: contact pressure"), sub),
                     x_m,
                     ("p", "Pa"),
-                    &[Curve { label: "p", x, y: p, colour: blue }],
+                    &curves,
                     &[],
                 )?,
             ));
             let mut bands: Vec<(f64, f64, RGBColor)> =
                 out.zones.stick.iter().map(|z| (z[0], z[1], blue)).collect();
             bands.extend(out.zones.slip.iter().map(|z| (z[0], z[1], red)));
+            let mut curves = vec![
+                Curve { dashed: false, label: "q", x, y: q, colour: red },
+                Curve { dashed: false, label: "p", x, y: p, colour: blue },
+            ];
+            if let Some((label, (rx, ry))) = &qref {
+                curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+            }
             files.push((
                 "traction.svg".to_string(),
                 line_chart(
-                    &format!("{st}: shear traction q (bands: stick blue, slip red)"),
+                    (&format!("{st}: shear traction q (bands: stick blue, slip red)"), sub),
                     x_m,
                     ("p, q", "Pa"),
-                    &[
-                        Curve { label: "q", x, y: q, colour: red },
-                        Curve { label: "p", x, y: p, colour: blue },
-                    ],
+                    &curves,
                     &bands,
                 )?,
             ));
             files.push((
                 "stick_slip.svg".to_string(),
                 line_chart(
-                    &format!("{st}: stick (blue) and slip (red) zones, |q|/p"),
+                    (&format!("{st}: stick (blue) and slip (red) zones, |q|/p"), sub),
                     x_m,
                     ("|q| / p", ""),
                     &[Curve {
+                        dashed: false,
                         label: "|q|/p",
                         x,
                         y: &p
@@ -536,7 +671,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                             .zip(q)
                             .map(|(p, q)| if *p > 0.0 { q.abs() / p } else { 0.0 })
                             .collect::<Vec<_>>(),
-                        colour: RGBColor(40, 40, 40),
+                        colour: grey,
                     }],
                     &bands,
                 )?,
@@ -545,12 +680,12 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 files.push((
                     "displacement.svg".to_string(),
                     line_chart(
-                        &format!("{st}: surface displacement of the substrate"),
+                        (&format!("{st}: surface displacement of the substrate"), sub),
                         x_m,
                         ("u", "m"),
                         &[
-                            Curve { label: "ux", x, y: ux, colour: red },
-                            Curve { label: "uy", x, y: uy, colour: blue },
+                            Curve { dashed: false, label: "ux", x, y: ux, colour: red },
+                            Curve { dashed: false, label: "uy", x, y: uy, colour: blue },
                         ],
                         &[],
                     )?,
@@ -565,6 +700,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
             let outline = stick_outline(x, y, stick);
             let map = |title: String, name, v| Map {
                 title,
+                sub,
                 name,
                 base: "Pa",
                 x,
@@ -591,7 +727,36 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                     &qt,
                 ))?,
             ));
-            files.push(("stick_slip.svg".to_string(), stick_map(st, x, y, stick)?));
+            files.push(("stick_slip.svg".to_string(), stick_map((st, sub), x, y, stick)?));
+            // Sections along x through the row nearest the centre, beside the closed forms
+            // evaluated on that same row.
+            let j0 = (0..y.len()).min_by(|&a, &b| y[a].abs().total_cmp(&y[b].abs())).unwrap_or(0);
+            let (x0, x1, y0) = (x[0], x[x.len() - 1], y[j0]);
+            let at = format!("section y = {}", eng_near(y0, x1.abs().max(x0.abs()), 1e-10, "m"));
+            for (file, name, row, r) in [
+                ("pressure_section.svg", "p", &pt[j0], refs.pressure.as_ref()),
+                ("traction_section.svg", "|q|", &qt[j0], refs.traction.as_ref()),
+            ] {
+                if name == "|q|" && row.iter().all(|v| *v == 0.0) {
+                    continue;
+                }
+                let reference = r.map(|r| (r.label, sample(r, x0, x1, y0)));
+                let mut curves =
+                    vec![Curve { dashed: false, label: name, x, y: row, colour: blue }];
+                if let Some((label, (rx, ry))) = &reference {
+                    curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+                }
+                files.push((
+                    file.to_string(),
+                    line_chart(
+                        (&format!("{st}: {name}, {at}"), sub),
+                        x_m,
+                        (name, "Pa"),
+                        &curves,
+                        &[],
+                    )?,
+                ));
+            }
         }
         _ => {}
     }
@@ -602,6 +767,7 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 format!("field_{name}.svg"),
                 heat_map(&Map {
                     title: format!("{st}: subsurface {name}"),
+                    sub,
                     name,
                     base: "Pa",
                     x: &f.x,
@@ -631,7 +797,11 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 files.push((
                     format!("field_{name}_xz.svg"),
                     heat_map(&Map {
-                        title: format!("{st}: {name}, section y = {}", eng(v.y[j0], "m")),
+                        title: format!(
+                            "{st}: {name}, section y = {}",
+                            eng_near(v.y[j0], v.x[0].abs().max(v.x[nx - 1].abs()), 1e-10, "m")
+                        ),
+                        sub,
                         name,
                         base: "Pa",
                         x: &v.x,
@@ -650,7 +820,11 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
                 files.push((
                     format!("field_{name}_yz.svg"),
                     heat_map(&Map {
-                        title: format!("{st}: {name}, section x = {}", eng(v.x[i0], "m")),
+                        title: format!(
+                            "{st}: {name}, section x = {}",
+                            eng_near(v.x[i0], v.y[0].abs().max(v.y[ny - 1].abs()), 1e-10, "m")
+                        ),
+                        sub,
                         name,
                         base: "Pa",
                         x: &v.y,
@@ -665,13 +839,24 @@ pub(crate) fn render(out: &Outcome) -> Result<Vec<(String, String)>, String> {
         }
     }
     if let Some(c) = &out.cycle {
+        let mut curves =
+            vec![Curve { dashed: false, label: "result", x: &c.delta, y: &c.t, colour: blue }];
+        if let Some((rx, ry)) = &refs.cycle {
+            curves.push(Curve {
+                dashed: true,
+                label: "Mindlin-Deresiewicz",
+                x: rx,
+                y: ry,
+                colour: grey,
+            });
+        }
         files.push((
             "cycle.svg".to_string(),
             line_chart(
-                &format!("{st}: Mindlin-Deresiewicz loop"),
+                (&format!("{st}: hysteresis loop"), sub),
                 ("relative displacement", "m"),
                 ("T", "N"),
-                &[Curve { label: "loop", x: &c.delta, y: &c.t, colour: blue }],
+                &curves,
                 &[],
             )?,
         ));
