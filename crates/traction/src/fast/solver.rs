@@ -139,7 +139,8 @@ pub struct FastSolution {
     /// Slip $\mathbf s_k = \mathbf w_k - \mathbf u_k$ (projected on the element direction
     /// for fixed directions).
     pub slip: Vec<(f64, f64)>,
-    /// Relative elastic displacement $\mathbf u_k = (K*\mathbf q)_k$.
+    /// Relative displacement $\mathbf u_k = (K*\mathbf q)_k$ (plus the prescribed
+    /// $\mathbf u^0_k$ when one was given).
     pub displacement: Vec<(f64, f64)>,
     /// Rigid shift $\boldsymbol\delta$ of the two bodies (for gross slip: the value at the
     /// onset of sliding).
@@ -175,6 +176,9 @@ pub struct FastProblem<'a> {
     pub(super) directions: TractionDirections,
     pub(super) model: InfluenceModel,
     pub(super) config: FastConfig,
+    /// A prescribed relative tangential displacement $\mathbf u^0_k$ added to $K*\mathbf q$
+    /// (the pressure's share under Dundurs coupling; [`FastProblem::with_prescribed_displacement`]).
+    pub(super) prescribed: Option<&'a [(f64, f64)]>,
 }
 
 impl<'a> FastProblem<'a> {
@@ -199,7 +203,37 @@ impl<'a> FastProblem<'a> {
             directions: TractionDirections::Free,
             model: InfluenceModel::default(),
             config: FastConfig::default(),
+            prescribed: None,
         })
+    }
+
+    /// Add a prescribed relative tangential displacement $\mathbf u^0_k$ (m, one per grid
+    /// element) to the elastic one: the slip becomes
+    /// $\mathbf s_k = \mathbf w_k - (K*\mathbf q)_k - \mathbf u^0_k$. This is how the normal
+    /// pressure enters the tangential problem of dissimilar bodies (Dundurs coupling,
+    /// [`crate::coupled`]): $\mathbf u^0 = K_{tn}\,p$. With it a zero load is no longer
+    /// trivial (the pressure alone drives a self-equilibrated traction).
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] for a list of another length than the grid,
+    /// [`Error::OutOfDomain`] for a non-finite value.
+    pub fn with_prescribed_displacement(mut self, u0: &'a [(f64, f64)]) -> Result<Self> {
+        if u0.len() != self.grid.len() {
+            return Err(Error::LengthMismatch {
+                name: "prescribed displacement",
+                expected: self.grid.len(),
+                got: u0.len(),
+            });
+        }
+        if let Some(v) = u0.iter().map(|v| v.0.hypot(v.1)).find(|v| !v.is_finite()) {
+            return Err(Error::OutOfDomain {
+                name: "prescribed displacement",
+                value: v,
+                allowed: "finite",
+            });
+        }
+        self.prescribed = Some(u0);
+        Ok(self)
     }
 
     /// Restrict the traction directions (the LP's one-direction assumption).
