@@ -225,3 +225,69 @@ fn identical_materials_are_refused_as_uncoupled() {
     .unwrap_err();
     assert!(e.to_string().contains("beta"), "{e}");
 }
+
+#[test]
+fn partial_slip_meets_the_coupled_contact_conditions_with_dense_influence() {
+    // f = 0.3, T = 0.2 P: a stick core and a slip annulus. The conditions are evaluated with
+    // the directly summed coefficients of `block` (no FFT), on the final p and q together.
+    let bodies = [steel(), Material::rigid()];
+    let c = Compliance::pair(&bodies[0], &bodies[1]);
+    let g0 = sphere_gap();
+    let (load, f) = (1.5, 0.3);
+    let sol = CoupledProblem::new(N, N, (H, H), &g0, bodies, f, Load::Force {
+        magnitude: 0.2 * load,
+        angle: 0.0,
+    })
+    .unwrap()
+    .with_tolerance(Tolerance::relative(1e-11).unwrap())
+    .solve(NormalLoad::Force(load))
+    .unwrap();
+    let nn = N * N;
+    let p = &sol.normal.pressure;
+    let q = &sol.traction;
+    let mut u = vec![[0.0; 3]; nn];
+    for (k, uk) in u.iter_mut().enumerate() {
+        for j in 0..nn {
+            let b = block(&c, k, j);
+            let src = [p[j], q[j].0, q[j].1];
+            for comp in 0..3 {
+                uk[comp] += (0..3).map(|s| b[comp][s] * src[s]).sum::<f64>();
+            }
+        }
+    }
+    let delta = sol.normal.approach;
+    let gmin = g0.iter().copied().fold(f64::INFINITY, f64::min);
+    let scale = delta - gmin;
+    let w = sol.tangential.shift;
+    let pmax = p.iter().copied().fold(0.0, f64::max);
+    let (mut gap_err, mut stick_slip, mut cone, mut align) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let (mut n_stick, mut n_slip) = (0, 0);
+    for k in 0..nn {
+        let g = g0[k] + u[k][0] - delta;
+        if p[k] > 0.0 {
+            gap_err = gap_err.max(g.abs() / scale);
+            let s = (w.0 - u[k][1], w.1 - u[k][2]);
+            let qm = q[k].0.hypot(q[k].1);
+            cone = cone.max((qm - f * p[k]).max(0.0) / pmax);
+            if qm < f * p[k] * (1.0 - 1e-6) {
+                n_stick += 1;
+                stick_slip = stick_slip.max(s.0.hypot(s.1) / scale);
+            } else {
+                n_slip += 1;
+                // slip parallel to the traction, same sense: s = lambda q, lambda >= 0
+                let cross = (s.0 * q[k].1 - s.1 * q[k].0) / qm;
+                let dot = (s.0 * q[k].0 + s.1 * q[k].1) / qm;
+                align = align.max(cross.abs() / scale).max((-dot).max(0.0) / scale);
+            }
+        } else {
+            gap_err = gap_err.max((-g).max(0.0) / scale);
+        }
+    }
+    eprintln!(
+        "passes {}, stick {n_stick}, slip {n_slip}: gap {gap_err:.2e}, stick slip {stick_slip:.2e}, \
+         cone {cone:.2e}, slip alignment {align:.2e} (relative to the interference {scale:.3e} m)",
+        sol.info.passes
+    );
+    assert!(n_stick > 0 && n_slip > 0, "expected partial slip");
+    assert!(gap_err <= 1e-9 && stick_slip <= 1e-9 && cone <= 1e-12 && align <= 1e-9);
+}
