@@ -201,3 +201,64 @@ fn generated_roughness_is_reproducible_and_shrinks_the_contact() {
     assert!(a.contact.p0 > smooth.contact.p0);
     assert!(a.audit.passed);
 }
+
+/// The scene of `go` with another indenter material.
+#[allow(clippy::result_large_err)]
+fn go_with(
+    indenter: &str,
+    cells: usize,
+    load: &str,
+) -> Result<(stickslip_scene::Plan, Outcome), stickslip_scene::SceneError> {
+    let src = BASE
+        .replace("BOUNDARY", "")
+        .replace("PROFILE", SPHERE)
+        .replace("ROUGH", "")
+        .replace("LOAD", load)
+        .replace("cells = [128, 128]", &format!("cells = [{cells}, {cells}]"))
+        .replace("model = \"same\"", indenter);
+    let dir = std::env::temp_dir();
+    let plan = stickslip_scene::Plan::new(&Scene::from_toml_str(&src, Some(dir.join("s.toml")))?)?;
+    let out = plan.execute(&RunOptions::default())?;
+    Ok((plan, out))
+}
+
+const ALUMINIUM: &str = "model = \"homogeneous\"\ne = \"70 GPa\"\nnu = 0.33";
+
+#[test]
+fn dissimilar_bodies_are_solved_coupled_and_the_plan_says_so() {
+    let tl = "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2";
+    let (plan, out) = go_with(ALUMINIUM, 64, tl).unwrap();
+    let friction = plan.effects.iter().find(|e| e.effect == stickslip_scene::Effect::Friction);
+    let reason = &friction.unwrap().reason;
+    assert!(reason.contains("Dundurs beta = -0.1167"), "{reason}");
+    let c = out.solver.coupling.expect("coupling record in result.json");
+    assert!(c.passes >= 2 && c.residual <= 1e-10, "{c:?}");
+    assert!((c.beta + 0.116_735_969_636_926_87).abs() < 1e-12, "{c:?}");
+    assert!(out.audit.passed);
+    assert!((out.forces.tangential - 1.0).abs() < 1e-12);
+    // The coupling moves the pressure: against the same bodies without a tangential load (no
+    // traction, so no coupling), the peak pressure differs, by little (|beta| = 0.12).
+    let (_, plain) = go_with(ALUMINIUM, 64, "normal = \"10 N\"").unwrap();
+    assert!(plain.solver.coupling.is_none());
+    let d = (out.contact.p0 - plain.contact.p0).abs() / plain.contact.p0;
+    eprintln!("p0 coupled {:.6e}, uncoupled {:.6e}: {d:.3e}", out.contact.p0, plain.contact.p0);
+    assert!(d > 1e-4 && d < 0.05, "relative change of p0 {d}");
+}
+
+#[test]
+fn identical_bodies_take_the_uncoupled_route() {
+    let tl = "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2";
+    let (plan, out) = go_with("model = \"same\"", 64, tl).unwrap();
+    let friction = plan.effects.iter().find(|e| e.effect == stickslip_scene::Effect::Friction);
+    assert!(!friction.unwrap().reason.contains("Dundurs"));
+    assert!(out.solver.coupling.is_none());
+    assert!(!out.notes.iter().any(|n| n.contains("Dundurs")), "{:?}", out.notes);
+}
+
+#[test]
+fn a_coupled_load_sweep_is_refused_with_its_key() {
+    let tl = "normal = [\"1 N\", \"10 N\", 4]\ntangential = \"0.1 N\"\nfriction = 0.2";
+    let e = go_with(ALUMINIUM, 64, tl).unwrap_err();
+    assert_eq!((e.key.as_deref(), e.kind), (Some("load.normal"), ErrorKind::Unsupported), "{e}");
+    assert!(e.hint.is_some(), "{e}");
+}

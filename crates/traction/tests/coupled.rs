@@ -234,10 +234,15 @@ fn partial_slip_meets_the_coupled_contact_conditions_with_dense_influence() {
     let c = Compliance::pair(&bodies[0], &bodies[1]);
     let g0 = sphere_gap();
     let (load, f) = (1.5, 0.3);
-    let sol = CoupledProblem::new(N, N, (H, H), &g0, bodies, f, Load::Force {
-        magnitude: 0.2 * load,
-        angle: 0.0,
-    })
+    let sol = CoupledProblem::new(
+        N,
+        N,
+        (H, H),
+        &g0,
+        bodies,
+        f,
+        Load::Force { magnitude: 0.2 * load, angle: 0.0 },
+    )
     .unwrap()
     .with_tolerance(Tolerance::relative(1e-11).unwrap())
     .solve(NormalLoad::Force(load))
