@@ -754,12 +754,25 @@ fn surface(
                 Some(a) => cx.choice(a, "geometry.profile.along", &["x", "xy"])? == "xy",
             },
         },
-        "flat" => Profile::Flat,
-        _ => {
-            return Err(cx
-                .err(ErrorKind::Unsupported, "geometry.profile.shape", Some(pr.shape.span()), "the crowned cylinder profile is not solved in this version")
-                .hint("use sphere, ellipsoid, punch, wavy or flat, or give the crowned profile as a roughness file"))
+        "cylinder" => {
+            let crown = match &pr.crown {
+                None => 0.0,
+                Some(c) => cx.qty(c, "geometry.profile.crown", Dim::LENGTH, "length")?,
+            };
+            let end_radius = match (&pr.end_radius, crown > 0.0) {
+                (Some(r), _) => cx.qty(r, "geometry.profile.end_radius", Dim::LENGTH, "radius")?,
+                (None, false) => 0.0,
+                (None, true) => cx.qty(need(cx, &pr.end_radius, "geometry.profile.end_radius", pspan.clone(), "the end radius of the crown")?, "geometry.profile.end_radius", Dim::LENGTH, "radius")?,
+            };
+            Profile::Cylinder {
+                radius: cx.qty(need(cx, &pr.radius, "geometry.profile.radius", pspan.clone(), "the roller radius")?, "geometry.profile.radius", Dim::LENGTH, "radius")?,
+                length: cx.qty(need(cx, &pr.length, "geometry.profile.length", pspan.clone(), "the roller length (along y)")?, "geometry.profile.length", Dim::LENGTH, "length")?,
+                crown,
+                end_radius,
+            }
         }
+        // "flat": `cx.choice` admits only the listed shapes
+        _ => Profile::Flat,
     };
     let roughness = match &g.roughness {
         None => None,
