@@ -287,8 +287,9 @@ fn roller(crown: &str) -> (Vec<Vec<f64>>, f64, f64) {
         "[geometry]\nkind = \"surface\"\nsize = [\"0.4 mm\", \"2.2 mm\"]\ncells = [64, 176]\n[geometry.profile]\nshape = \"cylinder\"\nradius = \"10 mm\"\nlength = \"2 mm\"\n{crown}\n[substrate]\nmodel = \"homogeneous\"\ne = \"210 GPa\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nnormal = \"200 N\"\n[outputs]\nsurface = true\n"
     );
     let dir = std::env::temp_dir();
-    let out = run(&Scene::from_toml_str(&src, Some(dir.join("r.toml"))).unwrap(), &RunOptions::default())
-        .unwrap();
+    let out =
+        run(&Scene::from_toml_str(&src, Some(dir.join("r.toml"))).unwrap(), &RunOptions::default())
+            .unwrap();
     assert!(out.audit.passed);
     let stickslip_scene::SurfaceOut::Grid { p, .. } = out.surface else { panic!("no lattice") };
     (p, 0.4e-3 / 64.0, 2.2e-3 / 176.0)
@@ -321,7 +322,10 @@ fn a_long_uncrowned_roller_is_hertz_line_contact_at_mid_length_with_edge_spikes(
     // the sharp ends: the centre line's pressure rises well above the mid-length value
     let centre: Vec<f64> = (0..ny).map(|j| 0.5 * (p[nx / 2 - 1][j] + p[nx / 2][j])).collect();
     let end = centre.iter().copied().fold(0.0, f64::max);
-    eprintln!("uncrowned: centre-line maximum {end:.4e} = {:.3} x mid-length; hy = {hy:e}", end / peak);
+    eprintln!(
+        "uncrowned: centre-line maximum {end:.4e} = {:.3} x mid-length; hy = {hy:e}",
+        end / peak
+    );
     assert!(end >= 1.3 * peak, "edge spike {end:e} vs mid {peak:e}");
 }
 
@@ -336,7 +340,10 @@ fn a_crown_removes_the_edge_spike() {
         let y = |j: usize| -1.1e-3 + (j as f64 + 0.5) * hy;
         let mid = 0.5 * (c[ny / 2 - 1] + c[ny / 2]);
         let (jmax, max) =
-            c.iter().copied().enumerate().fold((0, 0.0), |a, (j, v)| if v > a.1 { (j, v) } else { a });
+            c.iter()
+                .copied()
+                .enumerate()
+                .fold((0, 0.0), |a, (j, v)| if v > a.1 { (j, v) } else { a });
         let ends = (0..ny).filter(|&j| y(j).abs() > 0.9e-3).map(|j| c[j]).fold(0.0, f64::max);
         (mid, max, y(jmax), ends)
     };
