@@ -297,3 +297,77 @@ fn partial_slip_meets_the_coupled_contact_conditions_with_dense_influence() {
     assert!(n_stick > 0 && n_slip > 0, "expected partial slip");
     assert!(gap_err <= 1e-9 && stick_slip <= 1e-9 && cone <= 1e-12 && align <= 1e-9);
 }
+
+/// A rigid flat circular punch of radius `a` (a cells across the radius) on a lattice of
+/// `n` x `n` cells of side `h`: gap 0 on the face, far away outside it.
+fn punch_gap(n: usize, h: f64, a: f64) -> Vec<f64> {
+    let mut g = vec![0.0; n * n];
+    for j in 0..n {
+        for i in 0..n {
+            let x = -0.5 * n as f64 * h + (i as f64 + 0.5) * h;
+            let y = -0.5 * n as f64 * h + (j as f64 + 0.5) * h;
+            if x.hypot(y) > a {
+                g[j * n + i] = 1.0;
+            }
+        }
+    }
+    g
+}
+
+#[test]
+fn bonded_flat_punch_is_stiffer_by_mossakovskiis_factor() {
+    // A rigid flat punch pressed into steel (nu = 0.3) with complete adhesion (no slip) is
+    // stiffer than the frictionless one by artanh(beta)/beta = (1 - nu) ln(3 - 4 nu)/(1 - 2 nu)
+    // (Mossakovskii 1954; Spence 1968; Borodich & Keer 2004, Proc. R. Soc. A 460): 1.0286 at
+    // nu = 0.3. Both solves on the same lattice, so the discretisation error largely cancels
+    // in the ratio.
+    let (n, h) = (64usize, 1e-5);
+    let a = 24.5 * h;
+    let g0 = punch_gap(n, h, a);
+    let bodies = [steel(), Material::rigid()];
+    let beta = dundurs_beta(&bodies[0], &bodies[1]);
+    let delta = 1e-7;
+    let tol = Tolerance::relative(1e-10).unwrap();
+    let plain = stickslip_traction::NormalProblem::new(
+        n,
+        n,
+        (h, h),
+        &g0,
+        bodies,
+        stickslip_traction::Boundary::Free,
+    )
+    .unwrap()
+    .with_tolerance(tol)
+    .solve(NormalLoad::Approach(delta))
+    .unwrap();
+    let bonded = CoupledProblem::new(
+        n,
+        n,
+        (h, h),
+        &g0,
+        bodies,
+        1e4,
+        Load::Force { magnitude: 0.0, angle: 0.0 },
+    )
+    .unwrap()
+    .with_tolerance(tol)
+    .solve(NormalLoad::Approach(delta))
+    .unwrap();
+    let got = bonded.normal.force / plain.force;
+    let want = beta.atanh() / beta;
+    let nu = 0.3f64;
+    assert!((want - (1.0 - nu) * (3.0 - 4.0 * nu).ln() / (1.0 - 2.0 * nu)).abs() < 1e-12);
+    let area = plain.area;
+    let a_eff = (area / std::f64::consts::PI).sqrt();
+    let e_star = 210e9 / (1.0 - nu * nu);
+    eprintln!(
+        "flat punch, {} cells in contact: frictionless P/(2 a E* delta) = {:.5} (a from the area), \
+         bonded/frictionless = {got:.5} vs {want:.5} ({:+.2e}); {} passes",
+        plain.contact_cells,
+        plain.force / (2.0 * a_eff * e_star * delta),
+        (got - want) / want,
+        bonded.info.passes
+    );
+    assert!(bonded.tangential.regime == stickslip_traction::Regime::FullStick);
+    assert!((got - want).abs() <= 2e-3 * want, "bonded/frictionless {got} vs {want}");
+}
