@@ -115,10 +115,10 @@ pub(crate) struct RawGeometry {
 #[serde(deny_unknown_fields)]
 #[allow(dead_code)]
 pub(crate) struct RawProfile {
-    /// The profile shape (cylinder, the crowned roller, is not solved yet).
+    /// The profile shape.
     #[schemars(with = "String")]
     pub shape: Spanned<String>,
-    /// Sphere: the radius; punch: the radius of the flat face (length).
+    /// Sphere: the radius; punch: the radius of the flat face; cylinder: the roller radius (length).
     #[schemars(with = "Option<Qty>")]
     pub radius: Option<SQty>,
     /// Ellipsoid: the radii [Rx, Ry] (lengths).
@@ -136,13 +136,13 @@ pub(crate) struct RawProfile {
     /// Wavy: waves along x, or along x and y.
     #[schemars(with = "Option<String>")]
     pub along: Option<Spanned<String>>,
-    /// Crowned cylinder: the length (refused: not solved yet).
+    /// Cylinder: the roller length along y (length).
     #[schemars(with = "Option<Qty>")]
     pub length: Option<SQty>,
-    /// Crowned cylinder: the crown drop (refused: not solved yet).
+    /// Cylinder: the crown drop at the roller ends (length; default 0, no crown).
     #[schemars(with = "Option<Qty>")]
     pub crown: Option<SQty>,
-    /// Crowned cylinder: the end radius (refused: not solved yet).
+    /// Cylinder: the radius of the rounded ends (length; needed with a crown).
     #[schemars(with = "Option<Qty>")]
     pub end_radius: Option<SQty>,
 }

@@ -416,6 +416,29 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             expect("approach (Hertz)", c.indentation.unwrap(), a * a / r, 0.005);
             assert!(out.zones.grid.unwrap().stick > 0 && out.audit.passed);
         }
+        "crowned_roller.toml" => {
+            // Mid-length: Hertz line contact for the load per length carried there (peak
+            // pressure 1 %); the crowned ends (last 0.1 mm) carry no pressure.
+            let SurfaceOut::Grid { x, y, p, .. } = &out.surface else { panic!("grid") };
+            let (nx, ny) = (x.len(), y.len());
+            let hx = x[1] - x[0];
+            let mid: Vec<f64> = (0..nx).map(|i| 0.5 * (p[i][ny / 2 - 1] + p[i][ny / 2])).collect();
+            let load = mid.iter().sum::<f64>() * hx;
+            let e_star: f64 = 210e9 / (2.0 * (1.0 - 0.09));
+            let peak = mid.iter().copied().fold(0.0, f64::max);
+            expect(
+                "mid-length p0 (Hertz line, local P')",
+                peak,
+                (load * e_star / (PI * 0.01)).sqrt(),
+                0.01,
+            );
+            let ends = (0..ny)
+                .filter(|&j| y[j].abs() > 0.9e-3)
+                .flat_map(|j| (0..nx).map(move |i| (i, j)))
+                .map(|(i, j)| p[i][j])
+                .fold(0.0, f64::max);
+            assert!(ends == 0.0 && out.audit.passed, "pressure {ends} on the crowned ends");
+        }
         "wheel_rail_creepage_spin.toml" | "wheel_rail_fastsim.toml" => {
             // The scene's theory against the other one on the same Hertz grid: the exact
             // theory and FASTSIM differ by at most FASTSIM's measured force error (0.1 fN).

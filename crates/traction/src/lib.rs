@@ -29,6 +29,7 @@
 
 pub mod closed;
 pub mod contract;
+pub mod coupled;
 pub mod error;
 pub mod fast;
 pub mod field;

@@ -120,3 +120,38 @@ fn warm_start_of_the_wrong_length_is_refused() {
     let e = pr.solve_from(&op, &mut op.make_scratch(), &start).unwrap_err();
     assert!(matches!(e, Error::LengthMismatch { .. }), "{e}");
 }
+
+#[test]
+fn nested_start_carries_a_prescribed_displacement() {
+    // Dundurs coupling enters as a prescribed displacement u0 = K_tn p, which points
+    // radially for an axisymmetric pressure. With zero load it alone drives a
+    // self-equilibrated traction; the nested start must coarsen u0 with the lattice and
+    // reach the cold solution.
+    let (grid, m, a) = setup(5 * NEST_MIN_CELLS / 2);
+    let u0: Vec<(f64, f64)> = grid
+        .x
+        .iter()
+        .zip(&grid.y)
+        .map(|(&x, &y)| {
+            let r2 = (x * x + y * y) / (a * a);
+            let s = 2e-4 * a * (1.0 - r2).max(0.0).powf(1.5);
+            (s * x / a, s * y / a)
+        })
+        .collect();
+    for load in [Load::polar(0.0, 0.0).unwrap(), Load::polar(0.5 * F * P, 0.0).unwrap()] {
+        let pr = FastProblem::new(&grid, [m, m], F, load)
+            .unwrap()
+            .with_config(config())
+            .with_prescribed_displacement(&u0)
+            .unwrap();
+        let nested = pr.solve().unwrap();
+        assert!(nested.info.levels >= 1, "{:?}", nested.info);
+        let op = pr.operator().unwrap();
+        let cold = pr.solve_with(&op, &mut op.make_scratch()).unwrap();
+        let d = max_rel_diff(&nested.traction, &cold.traction);
+        assert!(d < 1e-7, "nested vs cold traction {d:.2e}");
+        // The traction is not trivial: u0 drives slip near the edge.
+        let qmax = cold.traction.iter().map(|q| q.0.hypot(q.1)).fold(0.0, f64::max);
+        assert!(qmax > 1e-3 * F * P / (a * a), "traction {qmax:e}");
+    }
+}

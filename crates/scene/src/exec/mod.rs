@@ -17,6 +17,7 @@
 #![allow(clippy::result_large_err)]
 
 mod audit;
+mod coupled;
 mod cycle;
 mod field;
 mod friction;
@@ -62,6 +63,8 @@ pub(crate) struct Ctx<'a> {
     /// The factor lambda of a closed form shown on the lattice (see
     /// `friction::sample_consistently`); `lambda - 1` is its sampling error.
     pub sampling: Option<f64>,
+    /// The coupled normal-tangential solve's record, when it ran.
+    pub coupling: Option<outcome::CouplingOut>,
 }
 
 impl Ctx<'_> {
@@ -165,6 +168,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         elements: 0,
         solve_seconds: 0.0,
         sampling: None,
+        coupling: None,
     };
     let parts = match &plan.recipe {
         Recipe::Line(r) => line(r, &mut cx),
@@ -206,6 +210,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
             elements: cx.elements,
             solve_seconds: cx.solve_seconds,
             seconds: t0.elapsed().as_secs_f64(),
+            coupling: cx.coupling,
         },
         rolling: parts.rolling,
         cycle: parts.cycle,
@@ -260,6 +265,10 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
 /// A static 3D contact: normal on the lattice → the tangential step → the cycle.
 fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneError> {
     use crate::plan::recipe::Tangential;
+    if let Some(beta) = r.coupling {
+        let (n, lat, t) = coupled::solve(r, beta, cx)?;
+        return contact_parts(r, n, lat, t, cx);
+    }
     let n = normal::contact(r, cx)?;
     let mut lat = n.lattice.clone();
     let t = match r.tangential {
@@ -277,6 +286,17 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         }
         Some(Tangential::Rolling(step)) => roll3d::solve(&mut lat, r, &n, &step, cx)?,
     };
+    contact_parts(r, n, lat, t, cx)
+}
+
+/// The cycle, the field and the result parts of a 3D contact after its tangential step.
+fn contact_parts(
+    r: &crate::plan::recipe::ContactRecipe,
+    n: normal::ContactSolution,
+    lat: lattice::Lattice,
+    t: friction::TangentialOut,
+    cx: &mut Ctx<'_>,
+) -> Result<Parts, SceneError> {
     let cycle = match r.cycle {
         Some(c) => Some(cycle::run(c, r, &n, cx)?),
         None => None,

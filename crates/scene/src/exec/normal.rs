@@ -217,15 +217,7 @@ fn surface_contact(
 ) -> Result<ContactSolution, SceneError> {
     let [nx, ny] = s.cells;
     let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
-    let (x0, y0) = (-0.5 * s.size[0], -0.5 * s.size[1]);
-    let mut gap = Vec::with_capacity(nx * ny);
-    for j in 0..ny {
-        for i in 0..nx {
-            let (x, y) = (x0 + (i as f64 + 0.5) * hx, y0 + (j as f64 + 0.5) * hy);
-            let h = s.roughness.as_ref().map_or(0.0, |h| h[j * nx + i]);
-            gap.push(s.profile.gap(x, y) - h);
-        }
-    }
+    let gap = surface_gap(s);
     let boundary = match s.boundary {
         SurfaceBoundary::Free => Boundary::Free,
         SurfaceBoundary::Periodic => Boundary::Periodic,
@@ -273,6 +265,38 @@ fn surface_contact(
     }
     cx.progress("normal contact", steps.len(), steps.len());
     let Some(sol) = sol else { return Err(solver_err("normal-contact solver", "no load step")) };
+    surface_solution(s, &sol, tolerance, curve, cx)
+}
+
+/// The initial gap of a surface on its lattice (profile minus roughness at the cell centres,
+/// row-major `j * nx + i`; the lattice is centred on the origin).
+pub(crate) fn surface_gap(s: &crate::scene::Surface) -> Vec<f64> {
+    let [nx, ny] = s.cells;
+    let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
+    let (x0, y0) = (-0.5 * s.size[0], -0.5 * s.size[1]);
+    let mut gap = Vec::with_capacity(nx * ny);
+    for j in 0..ny {
+        for i in 0..nx {
+            let (x, y) = (x0 + (i as f64 + 0.5) * hx, y0 + (j as f64 + 0.5) * hy);
+            let h = s.roughness.as_ref().map_or(0.0, |h| h[j * nx + i]);
+            gap.push(s.profile.gap(x, y) - h);
+        }
+    }
+    gap
+}
+
+/// The stage-1 solution of a surface from the normal solver's answer: refusal of no contact,
+/// the solver note, the contact grid and the lattice.
+pub(crate) fn surface_solution(
+    s: &crate::scene::Surface,
+    sol: &stickslip_traction::NormalSolution,
+    tolerance: f64,
+    curve: Option<LoadCurve>,
+    cx: &mut Ctx<'_>,
+) -> Result<ContactSolution, SceneError> {
+    let [nx, ny] = s.cells;
+    let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
+    let (x0, y0) = (-0.5 * s.size[0], -0.5 * s.size[1]);
     if sol.no_contact {
         return Err(SceneError::new(
             ErrorKind::Impossible,
@@ -327,7 +351,7 @@ fn surface_contact(
 }
 
 /// A normal-solver error as a scene error, by its variant.
-fn surface_err(e: stickslip_traction::Error) -> SceneError {
+pub(crate) fn surface_err(e: stickslip_traction::Error) -> SceneError {
     use stickslip_traction::Error as E;
     match &e {
         E::UnresolvedContact { minimum, .. } => SceneError::new(

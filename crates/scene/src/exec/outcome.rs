@@ -372,6 +372,29 @@ pub struct SolverOut {
     pub solve_seconds: f64,
     /// Wall time of the run (s).
     pub seconds: f64,
+    /// The normal-tangential coupling of dissimilar bodies, when it was solved.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub coupling: Option<CouplingOut>,
+}
+
+/// `solver.coupling` in result.json: the alternating normal-tangential solve of dissimilar
+/// bodies (Dundurs coupling).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CouplingOut {
+    /// Dundurs' beta of the pair.
+    pub beta: f64,
+    /// Alternation passes (a normal and a tangential solve each).
+    pub passes: usize,
+    /// Relative change of the pressure over the last pass.
+    pub pressure_change: f64,
+    /// Relative change of the traction over the last pass.
+    pub traction_change: f64,
+    /// The larger of the two changes (the coupling residual).
+    pub residual: f64,
+    /// Normal CCG iterations over all passes.
+    pub normal_iterations: usize,
+    /// Tangential Newton steps over all passes.
+    pub tangential_iterations: usize,
 }
 
 /// `rolling` in result.json (FORMULAS.md D notation).

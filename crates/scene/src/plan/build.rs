@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 
 use stickslip_graded::{Accuracy, GradedMaterial};
 use stickslip_halfspace::hertz::HertzSphere;
-use stickslip_halfspace::material::composite_modulus;
+use stickslip_halfspace::material::{composite_modulus, dundurs_beta};
 use stickslip_halfspace::Material;
 use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
 use stickslip_traction::{FastConfig, ModifiedLp, NormalProblem};
@@ -483,7 +483,31 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     let method = scene.solver.method;
     let both = l.tangential != 0.0 && l.moment != 0.0;
     let elements = lattice_elements(scene);
-    let (fast, grid_reason) = grid_solver(method, elements, both);
+    // Dissimilar bodies on a surface with friction carrying a force or moment: the normal
+    // and tangential problems are solved together (Dundurs coupling), with the fast solver.
+    let beta = dundurs_beta(&sub, &ind);
+    let couple = matches!(normal, ContactNormal::Surface { .. })
+        && beta != 0.0
+        && l.friction > 0.0
+        && !l.sliding
+        && (l.tangential != 0.0 || l.moment != 0.0)
+        && !matches!(scene.motion, Motion::RollingCreepage { .. } | Motion::Rolling { .. })
+        && method != Method::Lp;
+    if couple && l.normal_sweep.is_some() {
+        return Err(checks::unsupported(
+            "load.normal",
+            format!("a load sweep between dissimilar bodies (Dundurs beta = {beta:.4}) with a tangential load is not solved in this version (the coupled solve runs at one load)"),
+            "give one normal load, or remove the tangential load for the sweep",
+        ));
+    }
+    let (fast, grid_reason) = if couple && method != Method::Fast {
+        (
+            true,
+            format!("dissimilar bodies on a surface (Dundurs beta = {beta:.4}): the coupled normal-tangential solve uses the fast solver"),
+        )
+    } else {
+        grid_solver(method, elements, both)
+    };
     let closed_ok = !matches!(method, Method::Lp | Method::Fast);
     let force = {
         let angle = l.direction_deg.to_radians();
@@ -583,6 +607,12 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             cycle,
             lattice_output,
             field,
+            coupling: (couple
+                && matches!(
+                    tangential,
+                    Some(Tangential::Grid(GridStep { method: GridMethod::Fast, .. }))
+                ))
+            .then_some(beta),
         },
         grid_reason,
     ))
@@ -753,7 +783,31 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
             {
                 notes.push("Mindlin/Cattaneo/Lubkin neglect normal-tangential coupling (exact for identical materials)".to_string());
             }
-            effects.push(on(E::Friction, format!("f = {f} > 0 with {cause}"), t));
+            let mut reason = format!("f = {f} > 0 with {cause}");
+            if let Recipe::Contact(c) = recipe {
+                let surface = matches!(c.normal, ContactNormal::Surface { .. });
+                let grid = matches!(c.tangential, Some(Tangential::Grid(_)));
+                if grid && c.coupling.is_none() && !c.identical {
+                    let beta = dundurs_beta(&c.bodies[0], &c.bodies[1]);
+                    if beta != 0.0 {
+                        notes.push(if surface {
+                            format!("the modified LP neglects the normal-tangential coupling (Dundurs beta = {beta:.4}); solver.method = \"fast\" or \"auto\" solves it")
+                        } else {
+                            format!("the grid solver on a closed-form pressure neglects the normal-tangential coupling (Dundurs beta = {beta:.4}; exact for beta = 0); geometry.kind = \"surface\" solves it coupled")
+                        });
+                    }
+                }
+                if surface && l.sliding && !c.identical {
+                    let beta = dundurs_beta(&c.bodies[0], &c.bodies[1]);
+                    if beta != 0.0 {
+                        notes.push(format!("sliding q = f p on the surface's uncoupled pressure: the normal displacement of the shear (Dundurs beta = {beta:.4}) is neglected"));
+                    }
+                }
+                if let Some(beta) = c.coupling {
+                    reason.push_str(&format!("; coupled with the normal contact through Dundurs beta = {beta:.4} (dissimilar bodies): alternating normal and tangential solves until both fields settle"));
+                }
+            }
+            effects.push(on(E::Friction, reason, t));
         }
         _ if f > 0.0 => effects.push(off(
             E::Friction,

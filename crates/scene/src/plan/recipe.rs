@@ -216,6 +216,10 @@ pub struct ContactRecipe {
     pub lattice_output: bool,
     /// Subsurface stresses on a box of points, when asked.
     pub field: Option<ContactField>,
+    /// Dundurs' $\beta$ when the normal and tangential stages are solved together (a surface
+    /// with a fast-solver tangential step between dissimilar bodies, $\beta \ne 0$); None
+    /// when they separate.
+    pub coupling: Option<f64>,
 }
 
 /// Subsurface stresses of a 3D contact.

@@ -101,6 +101,23 @@ pub enum Profile {
         /// True for waves in x and y.
         along_xy: bool,
     },
+    /// A roller of radius $R$ (in the x-z plane) with its axis along y, of length $L$
+    /// centred on the origin: a straight middle part and, when `crown` $c > 0$, ends rounded
+    /// by the parabola of radius $\rho$ = `end_radius` over the end length
+    /// $l_e = \sqrt{2\rho c}$, so that the surface has dropped by $c$ at the ends:
+    /// $$g = \frac{x^2}{2R} + \frac{\max(|y| - (L/2 - l_e), 0)^2}{2\rho}\quad (|y| \le L/2).$$
+    /// Beyond the ends ($|y| > L/2$) there is no roller: the gap is $R$ (never closed).
+    /// `crown = 0` is the sharp-ended (uncrowned) roller.
+    Cylinder {
+        /// Radius R (m).
+        radius: f64,
+        /// Length L (m).
+        length: f64,
+        /// Crown drop c at the ends (m), 0 for none.
+        crown: f64,
+        /// End radius $\rho$ (m); unused when the crown is 0.
+        end_radius: f64,
+    },
     /// A flat surface (roughness only).
     Flat,
 }
@@ -124,6 +141,20 @@ impl Profile {
                 } else {
                     gx
                 }
+            }
+            Profile::Cylinder { radius, length, crown, end_radius } => {
+                let half = 0.5 * length;
+                if y.abs() > half {
+                    return radius;
+                }
+                let crowned = if crown > 0.0 {
+                    let flat = half - (2.0 * end_radius * crown).sqrt();
+                    let d = (y.abs() - flat).max(0.0);
+                    d * d / (2.0 * end_radius)
+                } else {
+                    0.0
+                };
+                x * x / (2.0 * radius) + crowned
             }
             Profile::Flat => 0.0,
         }

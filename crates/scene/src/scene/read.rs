@@ -760,32 +760,140 @@ fn surface(
     ) -> Result<&'v crate::raw::SQty, SceneError> {
         cx.required(v, key, span, what)
     }
-    let profile = match cx.choice(&pr.shape, "geometry.profile.shape", &["sphere", "ellipsoid", "cylinder", "punch", "wavy", "flat"])? {
+    let profile = match cx.choice(
+        &pr.shape,
+        "geometry.profile.shape",
+        &["sphere", "ellipsoid", "cylinder", "punch", "wavy", "flat"],
+    )? {
         "sphere" => Profile::Sphere {
-            radius: cx.qty(need(cx, &pr.radius, "geometry.profile.radius", pspan.clone(), "the radius")?, "geometry.profile.radius", Dim::LENGTH, "radius")?,
+            radius: cx.qty(
+                need(cx, &pr.radius, "geometry.profile.radius", pspan.clone(), "the radius")?,
+                "geometry.profile.radius",
+                Dim::LENGTH,
+                "radius",
+            )?,
         },
         "ellipsoid" => {
-            let r = cx.required(&pr.radii, "geometry.profile.radii", p.span(), "radii = [Rx, Ry]")?;
-            Profile::Ellipsoid { radii: cx.pair(r, "geometry.profile.radii", Dim::LENGTH, "radius", "two radii, e.g. [\"20 mm\", \"10 mm\"]")? }
+            let r =
+                cx.required(&pr.radii, "geometry.profile.radii", p.span(), "radii = [Rx, Ry]")?;
+            Profile::Ellipsoid {
+                radii: cx.pair(
+                    r,
+                    "geometry.profile.radii",
+                    Dim::LENGTH,
+                    "radius",
+                    "two radii, e.g. [\"20 mm\", \"10 mm\"]",
+                )?,
+            }
         }
         "punch" => Profile::Punch {
-            radius: cx.qty(need(cx, &pr.radius, "geometry.profile.radius", pspan.clone(), "the radius of the flat face")?, "geometry.profile.radius", Dim::LENGTH, "radius")?,
-            edge_radius: cx.qty(need(cx, &pr.edge_radius, "geometry.profile.edge_radius", pspan.clone(), "the edge radius")?, "geometry.profile.edge_radius", Dim::LENGTH, "radius")?,
+            radius: cx.qty(
+                need(
+                    cx,
+                    &pr.radius,
+                    "geometry.profile.radius",
+                    pspan.clone(),
+                    "the radius of the flat face",
+                )?,
+                "geometry.profile.radius",
+                Dim::LENGTH,
+                "radius",
+            )?,
+            edge_radius: cx.qty(
+                need(
+                    cx,
+                    &pr.edge_radius,
+                    "geometry.profile.edge_radius",
+                    pspan.clone(),
+                    "the edge radius",
+                )?,
+                "geometry.profile.edge_radius",
+                Dim::LENGTH,
+                "radius",
+            )?,
         },
         "wavy" => Profile::Wavy {
-            wavelength: cx.qty(need(cx, &pr.wavelength, "geometry.profile.wavelength", pspan.clone(), "the wavelength")?, "geometry.profile.wavelength", Dim::LENGTH, "length")?,
-            amplitude: cx.qty(need(cx, &pr.amplitude, "geometry.profile.amplitude", pspan.clone(), "the amplitude")?, "geometry.profile.amplitude", Dim::LENGTH, "length")?,
+            wavelength: cx.qty(
+                need(
+                    cx,
+                    &pr.wavelength,
+                    "geometry.profile.wavelength",
+                    pspan.clone(),
+                    "the wavelength",
+                )?,
+                "geometry.profile.wavelength",
+                Dim::LENGTH,
+                "length",
+            )?,
+            amplitude: cx.qty(
+                need(
+                    cx,
+                    &pr.amplitude,
+                    "geometry.profile.amplitude",
+                    pspan.clone(),
+                    "the amplitude",
+                )?,
+                "geometry.profile.amplitude",
+                Dim::LENGTH,
+                "length",
+            )?,
             along_xy: match &pr.along {
                 None => false,
                 Some(a) => cx.choice(a, "geometry.profile.along", &["x", "xy"])? == "xy",
             },
         },
-        "flat" => Profile::Flat,
-        _ => {
-            return Err(cx
-                .err(ErrorKind::Unsupported, "geometry.profile.shape", Some(pr.shape.span()), "the crowned cylinder profile is not solved in this version")
-                .hint("use sphere, ellipsoid, punch, wavy or flat, or give the crowned profile as a roughness file"))
+        "cylinder" => {
+            let crown = match &pr.crown {
+                None => 0.0,
+                Some(c) => cx.qty(c, "geometry.profile.crown", Dim::LENGTH, "length")?,
+            };
+            let end_radius = match (&pr.end_radius, crown > 0.0) {
+                (Some(r), _) => cx.qty(r, "geometry.profile.end_radius", Dim::LENGTH, "radius")?,
+                (None, false) => 0.0,
+                (None, true) => cx.qty(
+                    need(
+                        cx,
+                        &pr.end_radius,
+                        "geometry.profile.end_radius",
+                        pspan.clone(),
+                        "the end radius of the crown",
+                    )?,
+                    "geometry.profile.end_radius",
+                    Dim::LENGTH,
+                    "radius",
+                )?,
+            };
+            Profile::Cylinder {
+                radius: cx.qty(
+                    need(
+                        cx,
+                        &pr.radius,
+                        "geometry.profile.radius",
+                        pspan.clone(),
+                        "the roller radius",
+                    )?,
+                    "geometry.profile.radius",
+                    Dim::LENGTH,
+                    "radius",
+                )?,
+                length: cx.qty(
+                    need(
+                        cx,
+                        &pr.length,
+                        "geometry.profile.length",
+                        pspan.clone(),
+                        "the roller length (along y)",
+                    )?,
+                    "geometry.profile.length",
+                    Dim::LENGTH,
+                    "length",
+                )?,
+                crown,
+                end_radius,
+            }
         }
+        // "flat": `cx.choice` admits only the listed shapes
+        _ => Profile::Flat,
     };
     let roughness = match &g.roughness {
         None => None,

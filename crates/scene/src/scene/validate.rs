@@ -108,6 +108,38 @@ fn surface(s: &super::Surface) -> Result<(), Issue> {
             positive("geometry.profile.wavelength", wavelength, "length")?;
             positive("geometry.profile.amplitude", amplitude, "length")?;
         }
+        Profile::Cylinder { radius, length, crown, end_radius } => {
+            positive("geometry.profile.radius", radius, "radius")?;
+            positive("geometry.profile.length", length, "length")?;
+            if !(crown.is_finite() && crown >= 0.0) {
+                return Err(Issue::new(
+                    ErrorKind::OutOfRange,
+                    "geometry.profile.crown",
+                    format!("crown {crown:e} m"),
+                )
+                .hint("the crown drop at the roller ends is a length >= 0 (0: no crown)"));
+            }
+            if crown > 0.0 {
+                positive("geometry.profile.end_radius", end_radius, "radius")?;
+                let end = (2.0 * end_radius * crown).sqrt();
+                if end > 0.5 * length {
+                    return Err(Issue::new(
+                        ErrorKind::OutOfRange,
+                        "geometry.profile.crown",
+                        format!("a crown of {crown:e} m with end radius {end_radius:e} m needs rounded ends {end:e} m long, more than half the length {length:e} m"),
+                    )
+                    .hint(format!("at most crown = length^2/(8 end_radius) = {:e} m, or a smaller end_radius", length * length / (8.0 * end_radius))));
+                }
+            }
+            if s.size[1] < length {
+                return Err(Issue::new(
+                    ErrorKind::OutOfRange,
+                    "geometry.size",
+                    format!("the lattice is {:e} m long in y but the roller is {length:e} m long", s.size[1]),
+                )
+                .hint(format!("make size[1] at least the roller length {length:e} m (a little more shows its ends), or shorten the roller")));
+            }
+        }
         Profile::Flat => {}
     }
     if let Some(h) = &s.roughness {

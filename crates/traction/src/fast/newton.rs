@@ -162,6 +162,18 @@ impl<'p, 'a> Solver<'p, 'a> {
         self.products += 1;
     }
 
+    /// The state's displacement: $K*\mathbf q$ plus the prescribed $\mathbf u^0$, if any
+    /// (linear products of search directions use [`Solver::product`] alone).
+    fn state_product(&mut self, qx: &[f64], qy: &[f64], ux: &mut [f64], uy: &mut [f64]) {
+        self.product(qx, qy, ux, uy);
+        if let Some(u0) = self.p.prescribed {
+            for ((a, b), u) in ux.iter_mut().zip(uy.iter_mut()).zip(u0) {
+                *a += u.0;
+                *b += u.1;
+            }
+        }
+    }
+
     /// Rigid motion at element k for mode coefficients `mv`.
     #[inline]
     fn rigid(&self, mv: &[f64], k: usize) -> (f64, f64) {
@@ -252,6 +264,11 @@ impl<'p, 'a> Solver<'p, 'a> {
         let lnorm = self.loads.iter().map(|l| l * l).sum::<f64>().sqrt();
         let (got, scale) = self.load_values(qx, qy);
         let err = got.iter().zip(&self.loads).map(|(a, b)| (a - b).powi(2)).sum::<f64>().sqrt();
+        if lnorm == 0.0 {
+            // Zero load with a prescribed displacement: relative to the traction's own
+            // contributions (self-equilibrated traction).
+            return err / scale.max(f64::MIN_POSITIVE);
+        }
         err / lnorm.max(1e-300 * scale).max(f64::MIN_POSITIVE)
     }
 
@@ -383,7 +400,7 @@ impl<'p, 'a> Solver<'p, 'a> {
             }
             {
                 let (a, b) = (qx.clone(), qy.clone());
-                self.product(&a, &b, &mut ux, &mut uy);
+                self.state_product(&a, &b, &mut ux, &mut uy);
             }
             // Newton system.
             let mut dofs: Vec<Dof> = Vec::with_capacity(2 * n);
@@ -445,7 +462,7 @@ impl<'p, 'a> Solver<'p, 'a> {
             }
             {
                 let (a, b) = (qx.clone(), qy.clone());
-                self.product(&a, &b, &mut ux, &mut uy);
+                self.state_product(&a, &b, &mut ux, &mut uy);
             }
             iterations += 1;
             let (r, lr) = self.residuals(&qx, &qy, &ux, &uy, &mv);
@@ -575,7 +592,8 @@ impl<'p, 'a> Solver<'p, 'a> {
                 capacity: fcap,
             });
         }
-        if !all_zero && !gross {
+        // A prescribed displacement drives traction even at zero load.
+        if (!all_zero || self.p.prescribed.is_some()) && !gross {
             return Ok(None);
         }
         let that = if tmag > 0.0 { (tx / tmag, ty / tmag) } else { (1.0, 0.0) };
@@ -593,7 +611,7 @@ impl<'p, 'a> Solver<'p, 'a> {
         }
         let mut ux = vec![0.0; n];
         let mut uy = vec![0.0; n];
-        self.product(&qx.clone(), &qy.clone(), &mut ux, &mut uy);
+        self.state_product(&qx.clone(), &qy.clone(), &mut ux, &mut uy);
         // Onset of sliding: the rigid shift along T that first makes every slip non-negative.
         let beta = if gross {
             (0..n).map(|k| that.0 * ux[k] + that.1 * uy[k]).fold(f64::NEG_INFINITY, f64::max)

@@ -181,7 +181,8 @@ pub struct FastSolution {
     /// Slip $\mathbf s_k = \mathbf w_k - \mathbf u_k$ (projected on the element direction
     /// for fixed directions).
     pub slip: Vec<(f64, f64)>,
-    /// Relative elastic displacement $\mathbf u_k = (K*\mathbf q)_k$.
+    /// Relative displacement $\mathbf u_k = (K*\mathbf q)_k$ (plus the prescribed
+    /// $\mathbf u^0_k$ when one was given).
     pub displacement: Vec<(f64, f64)>,
     /// Rigid shift $\boldsymbol\delta$ of the two bodies (for gross slip: the value at the
     /// onset of sliding).
@@ -217,6 +218,9 @@ pub struct FastProblem<'a> {
     pub(super) directions: TractionDirections,
     pub(super) model: InfluenceModel,
     pub(super) config: FastConfig,
+    /// A prescribed relative tangential displacement $\mathbf u^0_k$ added to $K*\mathbf q$
+    /// (the pressure's share under Dundurs coupling; [`FastProblem::with_prescribed_displacement`]).
+    pub(super) prescribed: Option<&'a [(f64, f64)]>,
 }
 
 impl<'a> FastProblem<'a> {
@@ -241,7 +245,37 @@ impl<'a> FastProblem<'a> {
             directions: TractionDirections::Free,
             model: InfluenceModel::default(),
             config: FastConfig::default(),
+            prescribed: None,
         })
+    }
+
+    /// Add a prescribed relative tangential displacement $\mathbf u^0_k$ (m, one per grid
+    /// element) to the elastic one: the slip becomes
+    /// $\mathbf s_k = \mathbf w_k - (K*\mathbf q)_k - \mathbf u^0_k$. This is how the normal
+    /// pressure enters the tangential problem of dissimilar bodies (Dundurs coupling,
+    /// [`crate::coupled`]): $\mathbf u^0 = K_{tn}\,p$. With it a zero load is no longer
+    /// trivial (the pressure alone drives a self-equilibrated traction).
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] for a list of another length than the grid,
+    /// [`Error::OutOfDomain`] for a non-finite value.
+    pub fn with_prescribed_displacement(mut self, u0: &'a [(f64, f64)]) -> Result<Self> {
+        if u0.len() != self.grid.len() {
+            return Err(Error::LengthMismatch {
+                name: "prescribed displacement",
+                expected: self.grid.len(),
+                got: u0.len(),
+            });
+        }
+        if let Some(v) = u0.iter().map(|v| v.0.hypot(v.1)).find(|v| !v.is_finite()) {
+            return Err(Error::OutOfDomain {
+                name: "prescribed displacement",
+                value: v,
+                allowed: "finite",
+            });
+        }
+        self.prescribed = Some(u0);
+        Ok(self)
     }
 
     /// Restrict the traction directions (the LP's one-direction assumption).
@@ -394,7 +428,24 @@ impl<'a> FastProblem<'a> {
         // tolerance, so coarse levels stop at a looser residual.
         let tol = self.config.tolerance().rel().max(COARSE_TOLERANCE);
         let config = FastConfig { tolerance: Tolerance::relative(tol).ok()?, ..self.config };
-        let problem = FastProblem { grid: &coarse, load, config, ..self.clone() };
+        // A prescribed displacement (Dundurs coupling) goes down as its mean over each coarse
+        // element's children.
+        let prescribed: Option<Vec<(f64, f64)>> = self.prescribed.map(|u0| {
+            let mut sum = vec![(0.0, 0.0, 0usize); coarse.len()];
+            for (&c, u) in parent.iter().zip(u0) {
+                sum[c].0 += u.0;
+                sum[c].1 += u.1;
+                sum[c].2 += 1;
+            }
+            sum.iter().map(|&(x, y, m)| (x / m.max(1) as f64, y / m.max(1) as f64)).collect()
+        });
+        let problem = FastProblem {
+            grid: &coarse,
+            load,
+            config,
+            prescribed: prescribed.as_deref(),
+            ..self.clone()
+        };
         let s = problem.solve().ok()?;
         let traction = parent.iter().map(|&c| s.traction[c]).collect();
         let state = parent.iter().map(|&c| s.state[c]).collect();

@@ -1,0 +1,195 @@
+#!/usr/bin/env python3
+"""Our periodic normal-contact solver beside tamaas on one rough surface (not run in CI).
+
+One self-affine rough surface is generated here with numpy (Hurst exponent H, power
+spectrum ~ k^(-2(1+H)) between k_low and k_high cycles per period, random phases from a
+fixed seed, scaled to a given rms height) and written to heights.npy (float64, one row per
+y). Both programs solve the same periodic problem on it: a rigid rough surface pressed on
+an elastic half-space (E, nu) at the same mean pressure. Ours runs through the `stickslip`
+CLI (a scene with geometry.kind = "surface", boundary = "periodic", profile "flat" and the
+heights file as roughness); tamaas (`pip install tamaas`) through PolonskyKeerRey with the
+same tolerance. Both use the periodic half-space transfer 2/(E*|q|), so the pressure fields
+should agree to about the tolerance.
+
+Printed: contact area (fraction of the period), mean gap over the period, iterations,
+wall time of the solve, the solver's own residual, and the relative difference of the
+pressure fields ||p_ours - p_tamaas||_2 / ||p_tamaas||_2 (and the max difference over the
+max pressure).
+
+Usage (tamaas in a venv, outside CI):
+    python3 -m venv .peers && .peers/bin/pip install tamaas numpy
+    cargo build --release -p stickslip
+    .peers/bin/python scripts/compare_tamaas.py [--n 512] [--tol 1e-8] [--bin target/release/stickslip]
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+
+def rough_surface(n, hurst, rms, k_low, k_high, seed):
+    """Self-affine periodic heights (n x n, metres, zero mean, rms height `rms`)."""
+    rng = np.random.default_rng(seed)
+    k = np.fft.fftfreq(n, d=1.0 / n)  # cycles per period
+    kx, ky = np.meshgrid(k, k)  # [j, i]: row j is y
+    kk = np.hypot(kx, ky)
+    amp = np.zeros_like(kk)
+    band = (kk >= k_low) & (kk <= k_high)
+    amp[band] = kk[band] ** (-(1.0 + hurst))
+    phase = np.exp(2j * np.pi * rng.random((n, n)))
+    h = np.fft.ifft2(amp * phase).real
+    h -= h.mean()
+    return h * (rms / h.std())
+
+
+def run_ours(binary, work, n, size, e, nu, force, tol):
+    scene = f"""title = "tamaas comparison: periodic rough surface, {n} x {n}"
+[geometry]
+kind = "surface"
+boundary = "periodic"
+size = [{size}, {size}]
+cells = [{n}, {n}]
+[geometry.profile]
+shape = "flat"
+[geometry.roughness]
+file = "heights.npy"
+unit = "m"
+[substrate]
+model = "homogeneous"
+e = {e}
+nu = {nu}
+[indenter]
+model = "rigid"
+[load]
+normal = {force}
+[solver]
+tolerance = {tol}
+[outputs]
+surface = true
+"""
+    path = os.path.join(work, "scene.toml")
+    with open(path, "w") as f:
+        f.write(scene)
+    out = os.path.join(work, "ours")
+    t0 = time.perf_counter()
+    subprocess.run([binary, "run", path, "--out", out, "--force", "--quiet"], check=True, stdout=subprocess.DEVNULL)
+    wall = time.perf_counter() - t0
+    with open(os.path.join(out, "result.json")) as f:
+        res = json.load(f)
+    p = np.array(res["surface"]["p"], dtype=float)  # p[i][j] at (x[i], y[j])
+    gap = np.array(res["surface"]["gap"], dtype=float)
+    its = None
+    resid = None
+    for note in res.get("notes", []):
+        if note.startswith("normal contact of the surface"):
+            its = int(note.split(" iterations")[0].split(";")[-1].strip())
+            parts = note.split("residuals ")[1].split(" (tolerance")[0].split(", ")
+            resid = max(float(x.split()[-1]) for x in parts)
+    return {
+        "p": p.T,  # to [j, i] like the heights
+        "gap": gap.T,
+        "fraction": res["contact"]["fraction"],
+        "iterations": its,
+        "residual": resid,
+        "solve_seconds": res["solver"]["seconds"],
+        "wall": wall,
+    }
+
+
+def run_tamaas(h, size, e, nu, mean_pressure, tol):
+    import tamaas as tm
+
+    n = h.shape[0]
+    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [size, size], [n, n])
+    model.E = e
+    model.nu = nu
+    solver = tm.PolonskyKeerRey(model, np.ascontiguousarray(h), tol)
+    solver.max_iter = 10000
+    # tamaas prints its iteration log on the C stdout: capture it to read the count
+    log = tempfile.TemporaryFile(mode="w+")
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = (os.dup(1), os.dup(2))
+    os.dup2(log.fileno(), 1)
+    os.dup2(log.fileno(), 2)
+    try:
+        t0 = time.perf_counter()
+        error = solver.solve(mean_pressure)
+        secs = time.perf_counter() - t0
+    finally:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os.dup2(saved[0], 1)
+        os.dup2(saved[1], 2)
+        os.close(saved[0])
+        os.close(saved[1])
+    log.seek(0)
+    rows = [r.split() for r in log.read().splitlines() if r.strip() and r.split()[0].isdigit()]
+    its = int(rows[-1][0]) if rows else None
+    p = np.array(model.traction, dtype=float).reshape(n, n)
+    # gap: u - h up to the constant that closes it where there is pressure, sign so that it
+    # is non-negative outside the contact
+    g = np.array(model.displacement, dtype=float).reshape(n, n) - h
+    g -= g[p > 0].mean()
+    if g.mean() < 0:
+        g = -g
+    return {
+        "p": p,
+        "gap": g,
+        "fraction": float(np.mean(p > 0)),
+        "iterations": its,
+        "residual": error,
+        "solve_seconds": secs,
+        "version": tm.__version__,
+    }
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--n", type=int, default=512)
+    ap.add_argument("--tol", type=float, default=1e-8)
+    ap.add_argument("--bin", default="target/release/stickslip")
+    ap.add_argument("--seed", type=int, default=7)
+    args = ap.parse_args()
+    n, size, e, nu = args.n, 1e-3, 210e9, 0.3
+    rms, hurst = 1e-6, 0.8
+    h = rough_surface(n, hurst, rms, k_low=2, k_high=n // 8, seed=args.seed)
+    e_star = e / (1 - nu * nu)
+    # mean pressure: 1 % of the mean slope times E* gives a few per cent of contact
+    slope = np.sqrt(np.mean(np.gradient(h, size / n, axis=1) ** 2 + np.gradient(h, size / n, axis=0) ** 2))
+    mean_pressure = 0.02 * slope * e_star
+    force = mean_pressure * size * size
+    work = tempfile.mkdtemp(prefix="compare_tamaas_")
+    np.save(os.path.join(work, "heights.npy"), h)
+    ours = run_ours(os.path.abspath(args.bin), work, n, size, e, nu, force, args.tol)
+    try:
+        tam = run_tamaas(h, size, e, nu, mean_pressure, args.tol)
+    except ImportError:
+        print("tamaas is not installed: pip install tamaas (see the docstring)", file=sys.stderr)
+        return 2
+    diff = np.linalg.norm(ours["p"] - tam["p"]) / np.linalg.norm(tam["p"])
+    dmax = np.max(np.abs(ours["p"] - tam["p"])) / np.max(tam["p"])
+    print(f"periodic rough surface {n} x {n}, H = {hurst}, rms {rms:g} m, rms slope {slope:.4f}, "
+          f"mean pressure {mean_pressure:.4e} Pa, tolerance {args.tol:g}, tamaas {tam['version']}")
+    print(f"{'':24}{'stickslip':>22}{'tamaas':>22}")
+    print(f"{'contact fraction':24}{ours['fraction']:>22.6f}{tam['fraction']:>22.6f}")
+    print(f"{'mean gap (m)':24}{ours['gap'].mean():>22.6e}{tam['gap'].mean():>22.6e}")
+    print(f"{'iterations':24}{ours['iterations']!s:>22}{tam['iterations']!s:>22}")
+    print(f"{'solve time (s)':24}{ours['solve_seconds']:>22.3f}{tam['solve_seconds']:>22.3f}")
+    print(f"{'residual':24}{ours['residual']:>22.3e}{tam['residual']:>22.3e}")
+    print("(residuals: ours the largest of the gap, complementarity and force residuals of docs/SCENES.md;"
+          " tamaas its PolonskyKeerRey error)")
+    print(f"pressure fields: ||p_ours - p_tamaas|| / ||p_tamaas|| = {diff:.3e}; "
+          f"max |dp| / max p = {dmax:.3e}")
+    print(f"(our run's wall time including start-up and writing the outputs: {ours['wall']:.3f} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
