@@ -432,11 +432,13 @@ impl<'p, 'a> Solver<'p, 'a> {
             let (have, _) = self.load_values(&qx, &qy);
             let b: Vec<f64> =
                 self.loads.iter().zip(&have).map(|(l, h)| (l - h) / self.area).collect();
-            // Inner tolerance: 1e-4 relative, tightened near convergence and whenever the
-            // residual failed to decrease (inexact steps can make the active set wander).
-            // Near the target, once the active set has settled a Newton step is exact up to
-            // the linear solve, so the residual falls by about eta: ask for no more than
-            // takes it below the tolerance.
+            // Inner (CG) tolerance, relative to the projected residual's start, in the manner
+            // of Eisenstat and Walker: a tenth of the outer residual while that is large
+            // (early steps only need the active set to move the right way), and near the
+            // target no more than takes it below the tolerance (once the active set has
+            // settled a Newton step is exact up to the linear solve, so the residual falls by
+            // about eta); kept in [1e-6, 1e-2], and tightened further whenever the residual
+            // failed to decrease (inexact steps can make the active set wander).
             let eta = (0.1 * res).max(0.3 * tol / res).clamp(1e-6, 1e-2) * tighten;
             let qnorm = qx.iter().chain(&qy).map(|v| v * v).sum::<f64>().sqrt();
             let abs_floor = 0.05 * tol * qnorm;
@@ -770,7 +772,8 @@ impl<'p, 'a> Solver<'p, 'a> {
         let mut w = [[0.0; 3]; 3];
         for i in 0..nm {
             for j in 0..nm {
-                w[i][j] = dofs.par_iter().zip(gb[j].par_iter()).map(|(d, y)| brow(d)[i] * y).sum();
+                let gj = &gb[j];
+                w[i][j] = det_sum(nd, |r| r.map(|k| brow(&dofs[k])[i] * gj[k]).sum());
             }
         }
         // Symmetrise (G^-1 is symmetric up to rounding).
@@ -802,36 +805,50 @@ impl<'p, 'a> Solver<'p, 'a> {
                            acc: &mut [f64; 3]|
          -> Option<(f64, f64)> {
             this.g_apply(dofs, &first, &minv, r, &mut y);
-            let c = dofs
-                .par_iter()
-                .zip(y.par_iter())
-                .map(|(d, yv)| {
-                    let row = brow(d);
-                    [row[0] * yv, row[1] * yv, row[2] * yv]
-                })
-                .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]]);
+            let yr = &y;
+            let c = det_reduce(
+                nd,
+                [0.0; 3],
+                |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]],
+                |range| {
+                    let mut c = [0.0; 3];
+                    for k in range {
+                        let row = brow(&dofs[k]);
+                        for (cj, rj) in c.iter_mut().zip(row) {
+                            *cj += rj * yr[k];
+                        }
+                    }
+                    c
+                },
+            );
             let l = small_spd_solve(&w, nm, &c[..nm])?;
             for j in 0..nm {
                 acc[j] += l[j];
             }
             let gbr = &gb;
             let yr = &y;
-            let (rz, zz) = r
-                .par_iter_mut()
-                .zip(z.par_iter_mut())
-                .zip(dofs.par_iter())
+            let parts: Vec<(f64, f64)> = r
+                .par_chunks_mut(REDUCE_CHUNK)
+                .zip(z.par_chunks_mut(REDUCE_CHUNK))
                 .enumerate()
-                .map(|(i, ((rv, zv), d))| {
-                    let row = brow(d);
-                    *rv -= row[0] * l[0] + row[1] * l[1] + row[2] * l[2];
-                    let mut zi = yr[i];
-                    for (j, gj) in gbr.iter().enumerate() {
-                        zi -= l[j] * gj[i];
+                .map(|(c, (rc, zc))| {
+                    let mut acc = (0.0, 0.0);
+                    for (o, (rv, zv)) in rc.iter_mut().zip(zc.iter_mut()).enumerate() {
+                        let i = c * REDUCE_CHUNK + o;
+                        let row = brow(&dofs[i]);
+                        *rv -= row[0] * l[0] + row[1] * l[1] + row[2] * l[2];
+                        let mut zi = yr[i];
+                        for (j, gj) in gbr.iter().enumerate() {
+                            zi -= l[j] * gj[i];
+                        }
+                        *zv = zi;
+                        acc.0 += *rv * zi;
+                        acc.1 += zi * zi;
                     }
-                    *zv = zi;
-                    (*rv * zi, zi * zi)
+                    acc
                 })
-                .reduce(|| (0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+                .collect();
+            let (rz, zz) = parts.iter().fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
             Some((rz, zz))
         };
         // x0 = G^-1 B^T W^-1 b.
@@ -854,7 +871,7 @@ impl<'p, 'a> Solver<'p, 'a> {
         let mut its = 0;
         while znorm > stop && its < self.p.config.max_cg() {
             self.h_apply(dofs, &first, diag_d, &p, &mut hp);
-            let php: f64 = p.par_iter().zip(hp.par_iter()).map(|(a, b)| a * b).sum();
+            let php = det_sum(nd, |r| r.map(|k| p[k] * hp[k]).sum());
             if php.is_nan() || php <= 0.0 {
                 return Err(Error::NotPositiveDefinite { index: its });
             }
@@ -877,4 +894,30 @@ impl<'p, 'a> Solver<'p, 'a> {
         let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
         Ok((x, lam, its))
     }
+}
+
+/// Block length of the deterministic reductions: the sums of the CG iteration are taken in
+/// fixed blocks (in parallel) and the block sums added in order, so a solve gives the same
+/// bits whatever the number of threads and however rayon splits the work.
+const REDUCE_CHUNK: usize = 4096;
+
+/// Reduce `f` over fixed blocks of `0..n` (in parallel), the block results combined in
+/// order with `add`: deterministic, unlike a rayon `sum`, whose tree follows work stealing.
+fn det_reduce<R: Send + Copy>(
+    n: usize,
+    zero: R,
+    add: impl Fn(R, R) -> R,
+    f: impl Fn(std::ops::Range<usize>) -> R + Sync,
+) -> R {
+    let blocks = n.div_ceil(REDUCE_CHUNK);
+    let parts: Vec<R> = (0..blocks)
+        .into_par_iter()
+        .map(|b| f(b * REDUCE_CHUNK..((b + 1) * REDUCE_CHUNK).min(n)))
+        .collect();
+    parts.into_iter().fold(zero, add)
+}
+
+/// [`det_reduce`] for a plain sum.
+fn det_sum(n: usize, f: impl Fn(std::ops::Range<usize>) -> f64 + Sync) -> f64 {
+    det_reduce(n, 0.0, |a, b| a + b, f)
 }
