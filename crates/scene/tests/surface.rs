@@ -63,6 +63,27 @@ fn partial_slip_on_the_computed_contact_follows_mindlin() {
 }
 
 #[test]
+fn partial_slip_on_a_periodic_surface_follows_mindlin_and_the_isolated_contact() {
+    // The sphere's contact (about 0.17 mm across) in a 0.8 mm period: the images barely
+    // act, so the stick zone is Mindlin's and close to the isolated contact's.
+    let load = "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2";
+    let per = go("boundary = \"periodic\"", SPHERE, "", load).unwrap();
+    let free = go("", SPHERE, "", load).unwrap();
+    let (gp, gf) = (per.zones.grid.unwrap(), free.zones.grid.unwrap());
+    let want = 0.5f64.powf(2.0 / 3.0);
+    assert!((gp.stick_area_fraction - want).abs() < 0.03, "{} vs {want}", gp.stick_area_fraction);
+    assert!(
+        (gp.stick_area_fraction - gf.stick_area_fraction).abs() < 0.02,
+        "periodic {} vs free {}",
+        gp.stick_area_fraction,
+        gf.stick_area_fraction
+    );
+    assert!(per.audit.passed);
+    assert!((per.forces.tangential - 1.0).abs() < 1e-6, "{}", per.forces.tangential);
+    assert!(per.notes.iter().any(|l| l.contains("periodic operator")), "{:?}", per.notes);
+}
+
+#[test]
 fn a_periodic_wave_in_full_contact_carries_westergaards_pressure() {
     // Westergaard: full contact from p* = pi E* amplitude / wavelength; above it the pressure
     // is the mean plus p* cos.
@@ -158,8 +179,16 @@ fn what_is_not_solved_is_refused_with_its_key() {
             "boundary = \"periodic\"",
             SPHERE,
             "",
-            "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2",
-            "geometry.boundary",
+            "normal = \"10 N\"\nmoment = \"1e-5 N m\"\nfriction = 0.2",
+            "load.moment",
+            ErrorKind::Unsupported,
+        ),
+        (
+            "boundary = \"periodic\"",
+            SPHERE,
+            "",
+            "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2\n[solver]\nmethod = \"lp\"",
+            "solver.method",
             ErrorKind::Unsupported,
         ),
         ("", SPHERE, "", "half_width = \"0.1 mm\"", "load.half_width", ErrorKind::Schema),

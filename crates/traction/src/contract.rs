@@ -20,7 +20,7 @@
 //! [`crate::TractionSolution::excess_load`] for any load beyond it.)
 
 use crate::error::{non_negative, positive, tolerance_in, Error, Result};
-use crate::fast::{FastConfig, FastProblem, TractionDirections};
+use crate::fast::{FastConfig, FastProblem, PeriodicLattice, TractionDirections};
 use crate::grid::ContactGrid;
 use crate::influence::InfluenceModel;
 use crate::lp::LpConfig;
@@ -233,6 +233,7 @@ pub struct GridProblem<'a> {
     model: InfluenceModel,
     tolerance: Tolerance,
     max_iterations: Option<usize>,
+    periodic: Option<PeriodicLattice>,
 }
 
 impl<'a> GridProblem<'a> {
@@ -251,7 +252,22 @@ impl<'a> GridProblem<'a> {
             model: InfluenceModel::default(),
             tolerance: Tolerance::default(),
             max_iterations: None,
+            periodic: None,
         })
+    }
+
+    /// The grid is one period of a periodic surface of lattice `lattice` (see
+    /// [`FastProblem::with_periodic`]); only [`FastSolver`] solves it, without a moment.
+    #[must_use]
+    pub fn with_periodic(mut self, lattice: PeriodicLattice) -> Self {
+        self.periodic = Some(lattice);
+        self
+    }
+
+    /// The periodic lattice, if the surface is periodic.
+    #[must_use]
+    pub fn periodic(&self) -> Option<PeriodicLattice> {
+        self.periodic
     }
 
     /// Use another influence model.
@@ -511,6 +527,13 @@ impl GridSolver for ModifiedLp {
     }
 
     fn solve(&self, problem: &GridProblem<'_>, load: &Load) -> Result<GridSolution> {
+        if problem.periodic.is_some() {
+            return Err(Error::OutOfDomain {
+                name: "periodic surface for the modified LP",
+                value: 1.0,
+                allowed: "an isolated contact (the LP's influence matrix has no periodic images); use the fast solver",
+            });
+        }
         let tol = tolerance_in(Self::NAME, problem.tolerance, Self::TOLERANCE_RANGE)?;
         let mut config = self.config;
         if let Some(m) = problem.max_iterations {
@@ -618,11 +641,14 @@ impl GridSolver for FastSolver {
             problem.max_iterations.unwrap_or(FastConfig::default().max_iterations());
         let config =
             FastConfig::new(problem.tolerance, max_iterations)?.with_max_cg(self.max_cg)?;
-        let s = FastProblem::new(problem.grid, problem.bodies, problem.friction, *load)?
+        let mut fp = FastProblem::new(problem.grid, problem.bodies, problem.friction, *load)?
             .with_model(problem.model)
             .with_directions(self.directions.clone())?
-            .with_config(config)
-            .solve()?;
+            .with_config(config);
+        if let Some(lattice) = problem.periodic {
+            fp = fp.with_periodic(lattice)?;
+        }
+        let s = fp.solve()?;
         Ok(GridSolution {
             regime: s.regime,
             traction: s.traction,

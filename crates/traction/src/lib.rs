@@ -45,7 +45,9 @@ pub use contract::{
     FastSolver, GridProblem, GridSolution, GridSolver, Load, LoadKind, ModifiedLp, SolverInfo,
 };
 pub use error::{Error, Result};
-pub use fast::{FastConfig, FastProblem, FastSolution, TractionDirections, WarmStart};
+pub use fast::{
+    FastConfig, FastProblem, FastSolution, PeriodicLattice, TractionDirections, WarmStart,
+};
 pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
 pub use influence::InfluenceModel;
 pub use lp::{LpConfig, LpSolution};

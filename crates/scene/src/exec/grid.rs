@@ -4,7 +4,7 @@
 
 use stickslip_traction::{
     Error as TractionError, FastSolver, GridProblem, GridSolver, Load, LoadKind, ModifiedLp,
-    Tolerance,
+    PeriodicLattice, Tolerance,
 };
 
 use super::friction::TangentialOut;
@@ -13,7 +13,8 @@ use super::normal::ContactSolution;
 use super::outcome::{GridZones, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::error::{ErrorKind, SceneError};
-use crate::plan::recipe::{ContactRecipe, Force, GridMethod};
+use crate::plan::recipe::{ContactNormal, ContactRecipe, Force, GridMethod};
+use crate::scene::SurfaceBoundary;
 
 /// The grid solve of `method` under a force, a moment, or both.
 #[allow(clippy::too_many_lines, clippy::too_many_arguments)]
@@ -39,9 +40,18 @@ pub(crate) fn solve(
     }
     .map_err(|e| solver_err("grid solver load", e))?;
     let tolerance = Tolerance::relative(tolerance).map_err(|e| solver_err("tolerance", e))?;
-    let problem = GridProblem::new(grid, r.bodies, r.friction)
+    let mut problem = GridProblem::new(grid, r.bodies, r.friction)
         .map_err(|e| grid_err(method, e))?
         .with_tolerance(tolerance);
+    // A periodic surface: the tangential operator has the same period as the normal one.
+    if let ContactNormal::Surface { surface, .. } = &r.normal {
+        if surface.boundary == SurfaceBoundary::Periodic {
+            let [nx, ny] = surface.cells;
+            let (hx, hy) = (surface.size[0] / nx as f64, surface.size[1] / ny as f64);
+            let origin = (-0.5 * surface.size[0] + 0.5 * hx, -0.5 * surface.size[1] + 0.5 * hy);
+            problem = problem.with_periodic(PeriodicLattice { cells: (nx, ny), origin });
+        }
+    }
     let (stage, solver): (&'static str, Box<dyn GridSolver>) = match method {
         GridMethod::Lp => ("modified LP", Box::new(ModifiedLp::default())),
         GridMethod::Fast => ("fast solver", Box::new(FastSolver::default())),

@@ -461,14 +461,36 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
                 NormalLoad::HalfWidth(_) => return Err(half_width_refused()),
                 NormalLoad::Force(p) | NormalLoad::FromPatches(p) => SurfaceLoad::Force(p),
             };
-            if s.boundary == SurfaceBoundary::Periodic
-                && (l.tangential != 0.0 || l.moment != 0.0 || l.sliding)
-            {
-                return Err(checks::unsupported(
-                    "geometry.boundary",
-                    "tangential loads on a periodic surface are not solved in this version (the grid solvers are free-boundary)",
-                    "use boundary = \"free\", or remove the tangential load",
-                ));
+            // A periodic surface carries a tangential force through the fast solver's
+            // periodic operator; a moment (a rotation is not periodic), sliding, rolling and
+            // the modified LP (no periodic images) are refused.
+            if s.boundary == SurfaceBoundary::Periodic && l.friction > 0.0 {
+                if l.moment != 0.0 {
+                    return Err(checks::unsupported(
+                        "load.moment",
+                        "a twisting moment on a periodic surface has no meaning (a rigid rotation is not periodic)",
+                        "use boundary = \"free\" for an isolated contact under a moment, or remove load.moment",
+                    ));
+                }
+                if l.sliding
+                    || matches!(
+                        scene.motion,
+                        Motion::RollingCreepage { .. } | Motion::Rolling { .. }
+                    )
+                {
+                    return Err(checks::unsupported(
+                        "geometry.boundary",
+                        "sliding and rolling on a periodic surface are not solved in this version",
+                        "use boundary = \"free\", or a tangential force below the friction limit",
+                    ));
+                }
+                if l.tangential != 0.0 && scene.solver.method == Method::Lp {
+                    return Err(checks::unsupported(
+                        "solver.method",
+                        "the modified LP solves isolated contacts only (no periodic images)",
+                        "use solver.method = \"fast\" or \"auto\" on a periodic surface",
+                    ));
+                }
             }
             let tolerance =
                 tolerance_for(scene, "the normal-contact solver", NormalProblem::TOLERANCE_RANGE)?;
@@ -486,7 +508,9 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     // Dissimilar bodies on a surface with friction carrying a force or moment: the normal
     // and tangential problems are solved together (Dundurs coupling), with the fast solver.
     let beta = dundurs_beta(&sub, &ind);
+    let periodic = matches!(&normal, ContactNormal::Surface { surface, .. } if surface.boundary == SurfaceBoundary::Periodic);
     let couple = matches!(normal, ContactNormal::Surface { .. })
+        && !periodic
         && beta != 0.0
         && l.friction > 0.0
         && !l.sliding
@@ -505,6 +529,13 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             true,
             format!("dissimilar bodies on a surface (Dundurs beta = {beta:.4}): the coupled normal-tangential solve uses the fast solver"),
         )
+    } else if periodic {
+        let neglected = if beta != 0.0 && l.friction > 0.0 && l.tangential != 0.0 {
+            format!("; the Dundurs coupling of the dissimilar bodies (beta = {beta:.4}) is neglected: the coupled solve is free-boundary, so the pressure is that of the normal problem alone")
+        } else {
+            String::new()
+        };
+        (true, format!("a periodic surface: the fast solver with its periodic operator{neglected}"))
     } else {
         grid_solver(method, elements, both)
     };

@@ -82,7 +82,7 @@ mod operator;
 mod solver;
 
 pub(crate) use operator::fast_size;
-pub use operator::{ConvScratch, TensorConvolution};
+pub use operator::{ConvScratch, PeriodicLattice, TensorConvolution};
 pub(crate) use solver::{resultant_moment, SOLVER_NAME};
 pub use solver::{
     FastConfig, FastInfo, FastProblem, FastSolution, TractionDirections, WarmStart, NEST_MIN_CELLS,

@@ -461,6 +461,123 @@ impl TensorConvolution {
     }
 }
 
+/// The lattice of a periodic surface: `cells` = $(n_x, n_y)$ cells per period and `origin`
+/// the centre of one lattice cell, so that element centres sit at
+/// `origin + (i h_x, j h_y)` for integers $i, j$ (taken modulo the period).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PeriodicLattice {
+    /// Cells per period along $x$ and $y$.
+    pub cells: (usize, usize),
+    /// Centre of one lattice cell (m).
+    pub origin: (f64, f64),
+}
+
+impl TensorConvolution {
+    /// The tangential operator of `grid` on a periodic surface of lattice `lattice`: the
+    /// relative displacement of the two bodies under a periodic traction, by the Fourier
+    /// transform of Cerruti's solution,
+    /// $\hat{\mathbf u}(\mathbf k) = |\mathbf k|^{-1}\,(aI - b\,\hat{\mathbf k}
+    /// \hat{\mathbf k}^{\mathsf T})\,\hat{\mathbf q}(\mathbf k)$, $a = \sum 1/G_i$,
+    /// $b = \sum \nu_i/G_i$, at the lattice's wave vectors, on the $n_x\times n_y$ torus
+    /// (no padding). The mean mode is set to zero: a periodic traction of non-zero mean
+    /// moves the surface without bound, so under periodicity the rigid shift is relative to
+    /// the mean tangential displacement (as the approach of the periodic normal problem is).
+    /// The same continuous transfer as the periodic normal solver (and as tamaas), so the two
+    /// stages pose one problem.
+    ///
+    /// # Errors
+    /// [`crate::Error::EmptyGrid`] for an empty grid; [`crate::Error::OutOfDomain`] for a
+    /// period of fewer than 2 cells, an element centre off the lattice, or two elements in
+    /// one cell of the period.
+    pub fn periodic(grid: &ContactGrid, c: &Compliance, lattice: &PeriodicLattice) -> Result<Self> {
+        let (nx, ny) = lattice.cells;
+        if nx < 2 || ny < 2 {
+            return Err(crate::Error::OutOfDomain {
+                name: "cells per period",
+                value: nx.min(ny) as f64,
+                allowed: ">= 2 along x and y",
+            });
+        }
+        if grid.is_empty() {
+            return Err(crate::Error::EmptyGrid { reason: "the grid has no element" });
+        }
+        let (x0, y0) = lattice.origin;
+        let mut cell = Vec::with_capacity(grid.len());
+        let mut seen = vec![false; nx * ny];
+        for k in 0..grid.len() {
+            let fi = (grid.x[k] - x0) / grid.hx;
+            let fj = (grid.y[k] - y0) / grid.hy;
+            let (i, j) = (fi.round(), fj.round());
+            if !((fi - i).abs() <= 1e-6 && (fj - j).abs() <= 1e-6) {
+                return Err(crate::Error::OutOfDomain {
+                    name: "element centre offset from the periodic lattice (cells)",
+                    value: (fi - i).abs().max((fj - j).abs()),
+                    allowed: "<= 1e-6: all centres on the lattice of the period",
+                });
+            }
+            let c = (j as i64).rem_euclid(ny as i64) as usize * nx
+                + (i as i64).rem_euclid(nx as i64) as usize;
+            if seen[c] {
+                return Err(crate::Error::OutOfDomain {
+                    name: "element sharing a cell of the period (index)",
+                    value: k as f64,
+                    allowed: "one element per cell of the period",
+                });
+            }
+            seen[c] = true;
+            cell.push(c);
+        }
+        let mut op = Self::scalar_plan(nx, ny, nx, ny);
+        op.n = cell.len();
+        let (row_items, row_ptr) = rows_of(&cell, nx, ny);
+        op.cell = cell;
+        op.row_items = row_items;
+        op.row_ptr = row_ptr;
+        let a = c.one_minus_nu + c.nu;
+        let b = c.nu;
+        let (lx, ly) = (nx as f64 * grid.hx, ny as f64 * grid.hy);
+        let two_pi = 2.0 * std::f64::consts::PI;
+        let sym = |i: usize, j: usize| -> [f64; 3] {
+            let ii = if 2 * i <= nx { i as f64 } else { i as f64 - nx as f64 };
+            let jj = if 2 * j <= ny { j as f64 } else { j as f64 - ny as f64 };
+            let (kx, ky) = (two_pi * ii / lx, two_pi * jj / ly);
+            let k = kx.hypot(ky);
+            if k == 0.0 {
+                return [0.0; 3];
+            }
+            let (ex, ey) = (kx / k, ky / k);
+            [(a - b * ex * ex) / k, -b * ex * ey / k, (a - b * ey * ey) / k]
+        };
+        // The kernel at zero offset (the mean of the symbol over the whole spectrum): the
+        // self-influence the Newton system's diagonal uses.
+        let mut k0 = [0.0; 3];
+        for i in 0..nx {
+            for j in 0..ny {
+                let v = sym(i, j);
+                for (a, b) in k0.iter_mut().zip(v) {
+                    *a += b;
+                }
+            }
+        }
+        op.self_term = k0.map(|v| v / (nx * ny) as f64);
+        let mxh = op.mxh;
+        let (mut kxx, mut kxy, mut kyy) =
+            (vec![0.0; mxh * ny], vec![0.0; mxh * ny], vec![0.0; mxh * ny]);
+        for i in 0..mxh {
+            for j in 0..ny {
+                let v = sym(i, j);
+                kxx[i * ny + j] = v[0];
+                kxy[i * ny + j] = v[1];
+                kyy[i * ny + j] = v[2];
+            }
+        }
+        op.kxx = kxx;
+        op.kxy = kxy;
+        op.kyy = kyy;
+        Ok(op)
+    }
+}
+
 impl TensorConvolution {
     /// A preconditioner for the tangential operator of `grid`: the inverse of the half-space's
     /// tangential transfer, $\hat{\mathbf u} = |\mathbf k|^{-1}\,(aI - b\,\hat{\mathbf k}

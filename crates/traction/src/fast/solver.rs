@@ -2,7 +2,7 @@
 //! documentation of [`crate::fast`]); the iteration itself is in `newton.rs`.
 
 use super::newton::Solver;
-use super::operator::{ConvScratch, TensorConvolution};
+use super::operator::{ConvScratch, PeriodicLattice, TensorConvolution};
 use crate::contract::{check_pair, Load};
 use crate::error::{tolerance_in, Error, Result};
 use crate::grid::ContactGrid;
@@ -223,6 +223,9 @@ pub struct FastProblem<'a> {
     /// A prescribed relative tangential displacement $\mathbf u^0_k$ added to $K*\mathbf q$
     /// (the pressure's share under Dundurs coupling; [`FastProblem::with_prescribed_displacement`]).
     pub(super) prescribed: Option<&'a [(f64, f64)]>,
+    /// The period of a periodic surface ([`FastProblem::with_periodic`]); `None`: an isolated
+    /// contact (zero-padded FFT).
+    pub(super) periodic: Option<PeriodicLattice>,
 }
 
 impl<'a> FastProblem<'a> {
@@ -257,6 +260,7 @@ impl<'a> FastProblem<'a> {
             model: InfluenceModel::default(),
             config: FastConfig::default(),
             prescribed: None,
+            periodic: None,
         })
     }
 
@@ -286,6 +290,27 @@ impl<'a> FastProblem<'a> {
             });
         }
         self.prescribed = Some(u0);
+        Ok(self)
+    }
+
+    /// Solve on a periodic surface: the grid's elements are cells of the lattice `lattice`
+    /// (one period), and the operator is the periodic one of
+    /// [`TensorConvolution::periodic`] (Fourier transfer of Cerruti's solution, mean mode
+    /// zero). The rigid shift is then relative to the mean tangential displacement. A
+    /// twisting moment has no meaning on a periodic surface (a rotation is not periodic) and
+    /// is refused; the nested start is not used (the period need not halve).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for a load with a moment.
+    pub fn with_periodic(mut self, lattice: PeriodicLattice) -> Result<Self> {
+        if let Some(m) = self.load.moment_value() {
+            return Err(Error::OutOfDomain {
+                name: "twisting moment on a periodic surface",
+                value: m,
+                allowed: "none: a rotation is not periodic",
+            });
+        }
+        self.periodic = Some(lattice);
         Ok(self)
     }
 
@@ -372,7 +397,10 @@ impl<'a> FastProblem<'a> {
     /// # Errors
     /// As [`TensorConvolution::new`].
     pub fn operator(&self) -> Result<TensorConvolution> {
-        TensorConvolution::new(self.grid, &self.compliance(), self.model)
+        match &self.periodic {
+            Some(lattice) => TensorConvolution::periodic(self.grid, &self.compliance(), lattice),
+            None => TensorConvolution::new(self.grid, &self.compliance(), self.model),
+        }
     }
 
     /// Plan the operator and solve the discrete problem of the [`crate::fast`] module docs
@@ -419,7 +447,7 @@ impl<'a> FastProblem<'a> {
     /// the number of levels below; `None` when the lattice is too small, the directions are
     /// fixed per element, or the coarse problem fails.
     fn coarse_start(&self) -> Option<(WarmStart, usize)> {
-        if matches!(self.directions, TractionDirections::Fixed(_)) {
+        if matches!(self.directions, TractionDirections::Fixed(_)) || self.periodic.is_some() {
             return None;
         }
         let (coarse, parent) = self.grid.coarsened(NEST_MIN_CELLS)?;
