@@ -396,3 +396,53 @@ fn a_crown_removes_the_edge_spike() {
     assert!((y1.abs() - 0.6e-3).abs() < 0.1e-3, "crowned peak at {y1:e}");
     assert!(max1 < 0.6 * max0, "crowned peak {max1:e} vs sharp ends {max0:e}");
 }
+
+#[test]
+fn the_field_below_a_periodic_wave_in_full_contact_is_the_plane_strain_solution() {
+    // Westergaard: the wave gap A (1 - cos kx) pressed into full contact carries
+    // p = mean + p1 cos kx, p1 = pi E* A / lambda. The cosine part's plane-strain field
+    // (z depth, compression negative): sxx = -p1 (1 - kz) e^-kz cos kx,
+    // szz = -p1 (1 + kz) e^-kz cos kx, sxz = -p1 kz e^-kz sin kx, syy = nu (sxx + szz); the
+    // mean adds szz = -mean (its in-plane stresses are not determined by a periodic
+    // half-space and are left out).
+    let (lambda, amp, nu) = (0.8e-3, 0.05e-6, 0.3);
+    let p1 = PI * e_star() * amp / lambda;
+    let mean = 1.5 * p1;
+    let force = mean * 0.8e-3 * 0.8e-3;
+    let profile = format!("shape = \"wavy\"\nwavelength = {lambda}\namplitude = {amp}");
+    let load = format!(
+        "normal = {force}\n[outputs]\nfield = {{ x = [-0.0004, 0.0004, 17], y = [0, 0, 1], \
+         z = [0.00005, 0.0004, 4], scale = \"m\" }}"
+    );
+    let out = go("boundary = \"periodic\"", &profile, "", &load).unwrap();
+    assert_eq!(out.contact.fraction, Some(1.0));
+    let f = match &out.field {
+        stickslip_scene::Field::Volume(v) => v,
+        other => panic!("no volume field: {other:?}"),
+    };
+    assert!(f.method.contains("periodic"), "{}", f.method);
+    let k = 2.0 * PI / lambda;
+    let mut worst: f64 = 0.0;
+    for (iz, &z) in f.z.iter().enumerate() {
+        let d = (-k * z).exp();
+        for (ix, &x) in f.x.iter().enumerate() {
+            let idx = ix + f.x.len() * iz;
+            let (c, s) = ((k * x).cos(), (k * x).sin());
+            let sxx = -p1 * (1.0 - k * z) * d * c;
+            let szz = -p1 * (1.0 + k * z) * d * c - mean;
+            let sxz = -p1 * k * z * d * s;
+            let syy = nu * (sxx + (szz + mean));
+            let a = &f.arrays;
+            for (got, want) in
+                [(a.sxx[idx], sxx), (a.szz[idx], szz), (a.sxz[idx], sxz), (a.syy[idx], syy)]
+            {
+                worst = worst.max((got - want).abs() / p1);
+            }
+            assert!(a.sxy[idx].abs() < 1e-9 * p1 && a.syz[idx].abs() < 1e-9 * p1);
+        }
+    }
+    // 128 cells per wavelength: piecewise-constant pressure and bilinear interpolation
+    // between cell centres, both O((kh)^2) ~ 2.4e-3.
+    assert!(worst < 2e-3, "worst stress error {worst:.2e} p1");
+    println!("periodic wave field: worst error {worst:.2e} p1");
+}

@@ -10,8 +10,8 @@ use stickslip_halfspace::hertz::ellipse_field::HertzLoadField;
 use stickslip_halfspace::hertz::sphere_field::hertz_sphere_stress;
 use stickslip_halfspace::Stress3;
 use stickslip_traction::field::{
-    invariants, subsurface_field, FieldConfig, Lattice as FieldLattice, StressLayer,
-    SurfaceTraction,
+    invariants, subsurface_field, Boundary as FieldBoundary, FieldConfig, Lattice as FieldLattice,
+    StressLayer, SurfaceTraction,
 };
 
 use super::friction::LineTraction;
@@ -94,6 +94,7 @@ pub(crate) fn contact(
     f: &ContactField,
     n: &ContactSolution,
     lat: &Lattice,
+    periodic: bool,
     cx: &mut Ctx<'_>,
 ) -> Result<VolumeField, SceneError> {
     let g = f.grid;
@@ -191,6 +192,29 @@ pub(crate) fn contact(
                 cx.progress("subsurface field", k + 1, nz);
             }
             "Hertz ellipse field as one integral per point (Love's potential)".to_string()
+        }
+        ContactFieldMethod::Lattice if periodic => {
+            // A periodic surface: the field of the periodic traction on the surface's own
+            // lattice (one period), points taken modulo the period.
+            let (fl, p, qx, qy) = period_lattice(lat)?;
+            let t = SurfaceTraction { p: &p, qx: &qx, qy: &qy };
+            cx.progress("subsurface field", 0, nz);
+            let config =
+                FieldConfig { boundary: FieldBoundary::Periodic, ..FieldConfig::default() };
+            let field = subsurface_field(fl, f.nu, &t, &zs, config)
+                .map_err(|e| solver_err("subsurface field", e))?;
+            cx.progress("subsurface field", nz, nz);
+            for layer in &field.layers {
+                for &y in &ys {
+                    for &x in &xs {
+                        stresses.push(interpolate_periodic(&fl, layer, x, y));
+                    }
+                }
+            }
+            format!(
+                "periodic lattice of {} x {} cells of {:.3e} x {:.3e} m (one period of the surface), FFT per depth layer with the periodic half-space transfer, bilinear between cell centres across the period; the mean traction's in-plane stresses (sxx, syy, sxy of the zero frequency) are not determined by a periodic half-space and are left out",
+                fl.nx, fl.ny, fl.hx, fl.hy
+            )
         }
         ContactFieldMethod::Lattice => {
             let (fl, p, qx, qy) = extended_lattice(lat, &xs, &ys)?;
@@ -307,6 +331,55 @@ fn extended_lattice(
 }
 
 /// The stress at (x, y) of `layer`, bilinear between the four surrounding cell centres.
+/// One period of a periodic surface's lattice with its tractions (row-major `j * nx + i`).
+#[allow(clippy::type_complexity)]
+fn period_lattice(
+    lat: &Lattice,
+) -> Result<(FieldLattice, Vec<f64>, Vec<f64>, Vec<f64>), SceneError> {
+    let (nx, ny) = (lat.x.len(), lat.y.len());
+    if nx < 2 || ny < 2 {
+        return Err(solver_err("subsurface field", "the surface lattice has a single row"));
+    }
+    let (hx, hy) = (lat.x[1] - lat.x[0], lat.y[1] - lat.y[0]);
+    let fl = FieldLattice::new(nx, ny, hx, hy, lat.x[0], lat.y[0])
+        .map_err(|e| solver_err("subsurface field lattice", e))?;
+    let (mut p, mut qx, mut qy) = (vec![0.0; nx * ny], vec![0.0; nx * ny], vec![0.0; nx * ny]);
+    for i in 0..nx {
+        for j in 0..ny {
+            if lat.stick[i][j] >= 0 {
+                let k = j * nx + i;
+                p[k] = lat.p[i][j];
+                qx[k] = lat.qx[i][j];
+                qy[k] = lat.qy[i][j];
+            }
+        }
+    }
+    Ok((fl, p, qx, qy))
+}
+
+/// Bilinear interpolation between cell centres of a periodic lattice: the point is taken
+/// modulo the period, and the cells beyond the last centre are the first ones.
+fn interpolate_periodic(fl: &FieldLattice, layer: &StressLayer, x: f64, y: f64) -> Stress3 {
+    let u = ((x - fl.x0) / fl.hx).rem_euclid(fl.nx as f64);
+    let v = ((y - fl.y0) / fl.hy).rem_euclid(fl.ny as f64);
+    let (i0, j0) = ((u.floor() as usize).min(fl.nx - 1), (v.floor() as usize).min(fl.ny - 1));
+    let (s, t) = (u - i0 as f64, v - j0 as f64);
+    let (i1, j1) = ((i0 + 1) % fl.nx, (j0 + 1) % fl.ny);
+    let w = [(1.0 - s) * (1.0 - t), s * (1.0 - t), (1.0 - s) * t, s * t];
+    let ks = [j0 * fl.nx + i0, j0 * fl.nx + i1, j1 * fl.nx + i0, j1 * fl.nx + i1];
+    let mut out = Stress3::default();
+    for (wk, &k) in w.iter().zip(&ks) {
+        let c = layer.stress(k);
+        out.xx += wk * c.xx;
+        out.yy += wk * c.yy;
+        out.zz += wk * c.zz;
+        out.xy += wk * c.xy;
+        out.xz += wk * c.xz;
+        out.yz += wk * c.yz;
+    }
+    out
+}
+
 fn interpolate(fl: &FieldLattice, layer: &StressLayer, x: f64, y: f64) -> Stress3 {
     let u = ((x - fl.x0) / fl.hx).clamp(0.0, (fl.nx - 1) as f64);
     let v = ((y - fl.y0) / fl.hy).clamp(0.0, (fl.ny - 1) as f64);

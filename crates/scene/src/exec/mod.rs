@@ -302,7 +302,11 @@ fn contact_parts(
         None => None,
     };
     let field = match &r.field {
-        Some(f) => Field::Volume(Box::new(field::contact(f, &n, &lat, cx)?)),
+        Some(f) => {
+            let periodic = matches!(&r.normal, crate::plan::recipe::ContactNormal::Surface { surface, .. }
+                if surface.boundary == crate::scene::SurfaceBoundary::Periodic);
+            Field::Volume(Box::new(field::contact(f, &n, &lat, periodic, cx)?))
+        }
         None => Field::default(),
     };
     let load_curve = n.surface.as_ref().and_then(|s| s.curve.clone());
