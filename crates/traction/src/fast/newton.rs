@@ -750,6 +750,7 @@ impl<'p, 'a> Solver<'p, 'a> {
         }
         let modes = self.modes.clone();
         // Constraint row j at dof d: B_jd = m_j(x_k) . e_d.
+        let mut red = Reducer::new(nd);
         let brow = |d: &Dof| -> [f64; 3] {
             let mut row = [0.0; 3];
             for (j, m) in modes.iter().enumerate() {
@@ -780,7 +781,7 @@ impl<'p, 'a> Solver<'p, 'a> {
         for i in 0..nm {
             for j in 0..nm {
                 let gj = &gb[j];
-                w[i][j] = det_sum(nd, |r| r.map(|k| brow(&dofs[k])[i] * gj[k]).sum());
+                w[i][j] = red.sum(nd, |r| r.map(|k| brow(&dofs[k])[i] * gj[k]).sum());
             }
         }
         // Symmetrise (G^-1 is symmetric up to rounding).
@@ -807,39 +808,34 @@ impl<'p, 'a> Solver<'p, 'a> {
         // (r.z, |z|^2).
         let mut y = vec![0.0; nd];
         let mut project = |this: &mut Self,
+                           red: &mut Reducer,
                            r: &mut [f64],
                            z: &mut [f64],
                            acc: &mut [f64; 3]|
          -> Option<(f64, f64)> {
             this.g_apply(dofs, &first, &minv, r, &mut y);
             let yr = &y;
-            let c = det_reduce(
-                nd,
-                [0.0; 3],
-                |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]],
-                |range| {
-                    let mut c = [0.0; 3];
-                    for k in range {
-                        let row = brow(&dofs[k]);
-                        for (cj, rj) in c.iter_mut().zip(row) {
-                            *cj += rj * yr[k];
-                        }
+            let c = red.reduce(nd, |range| {
+                let mut c = [0.0; 3];
+                for k in range {
+                    let row = brow(&dofs[k]);
+                    for (cj, rj) in c.iter_mut().zip(row) {
+                        *cj += rj * yr[k];
                     }
-                    c
-                },
-            );
+                }
+                c
+            });
             let l = small_spd_solve(&w, nm, &c[..nm])?;
             for j in 0..nm {
                 acc[j] += l[j];
             }
             let gbr = &gb;
             let yr = &y;
-            let parts: Vec<(f64, f64)> = r
-                .par_chunks_mut(REDUCE_CHUNK)
+            r.par_chunks_mut(REDUCE_CHUNK)
                 .zip(z.par_chunks_mut(REDUCE_CHUNK))
                 .enumerate()
                 .map(|(c, (rc, zc))| {
-                    let mut acc = (0.0, 0.0);
+                    let mut acc = [0.0; 3];
                     for (o, (rv, zv)) in rc.iter_mut().zip(zc.iter_mut()).enumerate() {
                         let i = c * REDUCE_CHUNK + o;
                         let row = brow(&dofs[i]);
@@ -849,13 +845,13 @@ impl<'p, 'a> Solver<'p, 'a> {
                             zi -= l[j] * gj[i];
                         }
                         *zv = zi;
-                        acc.0 += *rv * zi;
-                        acc.1 += zi * zi;
+                        acc[0] += *rv * zi;
+                        acc[1] += zi * zi;
                     }
                     acc
                 })
-                .collect();
-            let (rz, zz) = parts.iter().fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+                .collect_into_vec(&mut red.parts);
+            let [rz, zz, _] = red.total();
             Some((rz, zz))
         };
         // x0 = G^-1 B^T W^-1 b.
@@ -870,7 +866,8 @@ impl<'p, 'a> Solver<'p, 'a> {
         drop(hx);
         let mut z = vec![0.0; nd];
         let mut acc = [0.0; 3];
-        let (mut rz, zz) = project(self, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        let (mut rz, zz) =
+            project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
         let stop = (eta * zz.sqrt()).max(abs_floor);
         let mut znorm = zz.sqrt();
         let mut p = z.clone();
@@ -878,7 +875,7 @@ impl<'p, 'a> Solver<'p, 'a> {
         let mut its = 0;
         while znorm > stop && its < self.p.config.max_cg() {
             self.h_apply(dofs, &first, diag_d, &p, &mut hp);
-            let php = det_sum(nd, |r| r.map(|k| p[k] * hp[k]).sum());
+            let php = red.sum(nd, |r| r.map(|k| p[k] * hp[k]).sum());
             if php.is_nan() || php <= 0.0 {
                 return Err(Error::NotPositiveDefinite { index: its });
             }
@@ -889,7 +886,8 @@ impl<'p, 'a> Solver<'p, 'a> {
                     *rv -= alpha * hv;
                 },
             );
-            let (rz_new, zz) = project(self, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+            let (rz_new, zz) =
+                project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
             let beta = rz_new / rz;
             rz = rz_new;
             znorm = zz.sqrt();
@@ -897,7 +895,7 @@ impl<'p, 'a> Solver<'p, 'a> {
             its += 1;
         }
         // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc), r now G^-1-orthogonal to B.
-        project(self, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
         let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
         Ok((x, lam, its))
     }
@@ -908,23 +906,37 @@ impl<'p, 'a> Solver<'p, 'a> {
 /// bits whatever the number of threads and however rayon splits the work.
 const REDUCE_CHUNK: usize = 4096;
 
-/// Reduce `f` over fixed blocks of `0..n` (in parallel), the block results combined in
-/// order with `add`: deterministic, unlike a rayon `sum`, whose tree follows work stealing.
-fn det_reduce<R: Send + Copy>(
-    n: usize,
-    zero: R,
-    add: impl Fn(R, R) -> R,
-    f: impl Fn(std::ops::Range<usize>) -> R + Sync,
-) -> R {
-    let blocks = n.div_ceil(REDUCE_CHUNK);
-    let parts: Vec<R> = (0..blocks)
-        .into_par_iter()
-        .map(|b| f(b * REDUCE_CHUNK..((b + 1) * REDUCE_CHUNK).min(n)))
-        .collect();
-    parts.into_iter().fold(zero, add)
+/// Deterministic parallel reductions: `f` over fixed blocks of `0..n` (in parallel), the
+/// block results added in order, so the sum does not depend on how rayon splits the work
+/// (unlike a rayon `sum`, whose tree follows work stealing). The buffer of block results is
+/// reused, so the CG loop does not allocate.
+struct Reducer {
+    parts: Vec<[f64; 3]>,
 }
 
-/// [`det_reduce`] for a plain sum.
-fn det_sum(n: usize, f: impl Fn(std::ops::Range<usize>) -> f64 + Sync) -> f64 {
-    det_reduce(n, 0.0, |a, b| a + b, f)
+impl Reducer {
+    fn new(n: usize) -> Self {
+        Self { parts: Vec::with_capacity(n.div_ceil(REDUCE_CHUNK)) }
+    }
+
+    fn reduce(
+        &mut self,
+        n: usize,
+        f: impl Fn(std::ops::Range<usize>) -> [f64; 3] + Sync + Send,
+    ) -> [f64; 3] {
+        (0..n.div_ceil(REDUCE_CHUNK))
+            .into_par_iter()
+            .map(|b| f(b * REDUCE_CHUNK..((b + 1) * REDUCE_CHUNK).min(n)))
+            .collect_into_vec(&mut self.parts);
+        self.total()
+    }
+
+    fn sum(&mut self, n: usize, f: impl Fn(std::ops::Range<usize>) -> f64 + Sync + Send) -> f64 {
+        self.reduce(n, |r| [f(r), 0.0, 0.0])[0]
+    }
+
+    /// The block results in `parts`, added in order.
+    fn total(&self) -> [f64; 3] {
+        self.parts.iter().fold([0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]])
+    }
 }
