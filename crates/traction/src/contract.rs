@@ -378,6 +378,9 @@ pub struct GridSolution {
     /// split itself (the modified LP: shift along the force, or rotation); otherwise
     /// [`GridSolution::substrate_share`] gives it.
     pub rigid_per_body: Option<[f64; 2]>,
+    /// The period of a periodic surface the solution was solved on (`None`: an isolated
+    /// contact); [`GridSolution::substrate_share`] uses the same operator.
+    pub periodic: Option<PeriodicLattice>,
     /// Termination information.
     pub info: SolverInfo,
 }
@@ -411,11 +414,16 @@ impl GridSolution {
         if identical {
             return Ok(0.5);
         }
-        let op = crate::fast::TensorConvolution::new(
-            grid,
-            &bodies[0].compliance(),
-            InfluenceModel::default(),
-        )?;
+        let op = match &self.periodic {
+            Some(lattice) => {
+                crate::fast::TensorConvolution::periodic(grid, &bodies[0].compliance(), lattice)?
+            }
+            None => crate::fast::TensorConvolution::new(
+                grid,
+                &bodies[0].compliance(),
+                InfluenceModel::default(),
+            )?,
+        };
         let mut scratch = op.make_scratch();
         let n = grid.len();
         let qx: Vec<f64> = self.traction.iter().map(|q| q.0).collect();
@@ -592,6 +600,7 @@ impl GridSolver for ModifiedLp {
             resultant,
             moment,
             rigid_per_body: Some(s.rigid_per_body),
+            periodic: None,
             info: SolverInfo {
                 solver: Self::NAME,
                 iterations: s.info.iterations,
@@ -661,6 +670,7 @@ impl GridSolver for FastSolver {
             resultant: s.resultant,
             moment: s.moment,
             rigid_per_body: None,
+            periodic: problem.periodic,
             info: SolverInfo {
                 solver: Self::NAME,
                 iterations: s.info.iterations,

@@ -160,3 +160,27 @@ fn periodic_surface_refuses_a_moment() {
         .unwrap();
     assert!(matches!(pr.solve().unwrap_err(), Error::OutOfDomain { .. }));
 }
+
+#[test]
+fn the_contract_solves_a_periodic_surface_and_splits_the_shift_per_body() {
+    use stickslip_traction::{FastSolver, GridProblem, GridSolver, ModifiedLp};
+    // Two bodies of one Poisson ratio: each body's periodic transfer is (1/G_i)(I - nu k k),
+    // so the substrate carries exactly (1/G_1) / (1/G_1 + 1/G_2) of the relative shift.
+    let steel = Material::new(210e9, 0.3).unwrap();
+    let alu = Material::new(70e9, 0.3).unwrap();
+    let grid = ContactGrid::hertz_circle(1e-4, 10.0, 24).unwrap();
+    let lattice = PeriodicLattice { cells: (64, 64), origin: (grid.x[0], grid.y[0]) };
+    let problem = GridProblem::new(&grid, [steel, alu], 0.3).unwrap().with_periodic(lattice);
+    let load = Load::polar(1.5, 0.3).unwrap();
+    let sol = FastSolver::default().solve(&problem, &load).unwrap();
+    assert_eq!(sol.periodic, Some(lattice));
+    let share = sol.substrate_share(&grid, &[steel, alu], false, true).unwrap();
+    let (g1, g2) = (steel.shear_modulus(), alu.shear_modulus());
+    let want = (1.0 / g1) / (1.0 / g1 + 1.0 / g2);
+    assert!((share / want - 1.0).abs() < 1e-9, "share {share} vs {want}");
+    // The modified LP has no periodic images: refused, not solved as isolated.
+    assert!(matches!(
+        ModifiedLp::default().solve(&problem, &load).unwrap_err(),
+        Error::OutOfDomain { .. }
+    ));
+}
