@@ -446,3 +446,24 @@ fn the_field_below_a_periodic_wave_in_full_contact_is_the_plane_strain_solution(
     assert!(worst < 2e-3, "worst stress error {worst:.2e} p1");
     println!("periodic wave field: worst error {worst:.2e} p1");
 }
+
+#[test]
+fn dissimilar_bodies_on_a_periodic_surface_are_solved_coupled() {
+    // A rigid sphere on steel (Dundurs beta = 0.286 > 0) in a 0.8 mm period, with a
+    // tangential force: the coupled solve runs with periodic operators.
+    let src = BASE
+        .replace("BOUNDARY", "boundary = \"periodic\"")
+        .replace("PROFILE", SPHERE)
+        .replace("ROUGH", "")
+        .replace("model = \"same\"", "model = \"rigid\"")
+        .replace("LOAD", "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.2");
+    let dir = std::env::temp_dir();
+    let out =
+        run(&Scene::from_toml_str(&src, Some(dir.join("s.toml"))).unwrap(), &RunOptions::default())
+            .unwrap();
+    let c = out.solver.coupling.as_ref().expect("a coupled solve");
+    assert!(c.beta > 0.2 && c.passes > 1, "{c:?}");
+    assert!(out.audit.passed);
+    assert!((out.forces.tangential - 1.0).abs() < 1e-6, "{}", out.forces.tangential);
+    assert!((out.forces.normal - 10.0).abs() < 1e-6, "{}", out.forces.normal);
+}

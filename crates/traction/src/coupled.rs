@@ -32,7 +32,10 @@
 //! until both fields change by at most the tolerance between passes:
 //! $\lVert p - p'\rVert_2 \le \varepsilon\lVert p\rVert_2$ and
 //! $\lVert\mathbf q - \mathbf q'\rVert_2 \le \varepsilon\lVert\mathbf q\rVert_2$. The cross
-//! products are zero-padded FFT convolutions of the odd kernels (complex spectra), $O(N\log N)$.
+//! products are zero-padded FFT convolutions of the odd kernels (complex spectra), $O(N\log N)$;
+//! on a periodic surface ([`CoupledProblem::with_boundary`]) all three operators are the
+//! periodic ones (continuous Fourier transfers on the period, mean mode zero:
+//! [`CrossOperator::periodic`]).
 //! The process contracts roughly by the factor $|\beta|$ per pass for a fixed contact set.
 //!
 //! With $\beta = 0$ the caller should not use this module: the uncoupled solvers give the
@@ -40,7 +43,7 @@
 
 use crate::contract::Load;
 use crate::error::{positive, tolerance_in, Error, Result};
-use crate::fast::{fast_size, FastConfig, FastProblem, FastSolution};
+use crate::fast::{fast_size, FastConfig, FastProblem, FastSolution, PeriodicLattice};
 use crate::normal::{Boundary, NormalLoad, NormalOperator, NormalProblem, NormalSolution};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
@@ -120,6 +123,44 @@ impl CrossOperator {
         op
     }
 
+    /// The cross kernels of one period of a periodic surface (`nx` × `ny` cells of `cell`):
+    /// the Fourier transfers of the point-force terms $u_x = -c_3x/(4\pi r^2)$ (pressure) and
+    /// $u_z = c_3x/(4\pi r^2)$ (tangential force), with
+    /// $\mathcal F[x/r^2] = -2\pi i k_x/|\mathbf k|^2$:
+    /// $\hat K^{tn}_x = i c_3k_x/(2|\mathbf k|^2)$, $\hat K^{nx} = -i c_3k_x/(2|\mathbf k|^2)$
+    /// (and the same with $k_y$), on the $n_x\times n_y$ torus (no padding), the mean mode
+    /// zero. The same continuous transfers as the periodic normal and tangential operators.
+    #[must_use]
+    pub fn periodic(nx: usize, ny: usize, cell: (f64, f64), c: &Compliance) -> Self {
+        let (mx, my) = (nx, ny);
+        let mut planner = FftPlanner::new();
+        let row = [planner.plan_fft_forward(mx), planner.plan_fft_inverse(mx)];
+        let col = [planner.plan_fft_forward(my), planner.plan_fft_inverse(my)];
+        let (lx, ly) = (nx as f64 * cell.0, ny as f64 * cell.1);
+        let two_pi = 2.0 * std::f64::consts::PI;
+        let scale = 1.0 / (mx * my) as f64;
+        let mut spec = [(); 4].map(|()| vec![C64::new(0.0, 0.0); mx * my]);
+        for j in 0..my {
+            let jj = if 2 * j <= my { j as f64 } else { j as f64 - my as f64 };
+            let ky = two_pi * jj / ly;
+            for i in 0..mx {
+                let ii = if 2 * i <= mx { i as f64 } else { i as f64 - mx as f64 };
+                let kx = two_pi * ii / lx;
+                let k2 = kx * kx + ky * ky;
+                if k2 == 0.0 {
+                    continue;
+                }
+                let f = 0.5 * c.one_minus_two_nu / k2 * scale;
+                let idx = j * mx + i;
+                spec[0][idx] = C64::new(0.0, -f * kx);
+                spec[1][idx] = C64::new(0.0, -f * ky);
+                spec[2][idx] = C64::new(0.0, f * kx);
+                spec[3][idx] = C64::new(0.0, f * ky);
+            }
+        }
+        Self { nx, ny, mx, my, row, col, spec }
+    }
+
     fn padded(&self, a: &[f64]) -> Vec<C64> {
         let mut out = vec![C64::new(0.0, 0.0); self.mx * self.my];
         for j in 0..self.ny {
@@ -184,7 +225,8 @@ fn op_fft(row: &Arc<dyn Fft<f64>>, col: &Arc<dyn Fft<f64>>, mx: usize, my: usize
     }
 }
 
-/// A normal plus tangential contact problem of two dissimilar bodies on a free lattice.
+/// A normal plus tangential contact problem of two dissimilar bodies on a lattice (free by
+/// default, or one period of a periodic surface).
 #[derive(Debug, Clone)]
 pub struct CoupledProblem<'a> {
     nx: usize,
@@ -197,6 +239,7 @@ pub struct CoupledProblem<'a> {
     tangential: Load,
     tolerance: Tolerance,
     max_passes: usize,
+    boundary: Boundary,
 }
 
 /// Termination information of the coupling iteration.
@@ -277,7 +320,17 @@ impl<'a> CoupledProblem<'a> {
             tangential,
             tolerance: Tolerance::default(),
             max_passes: DEFAULT_MAX_PASSES,
+            boundary: Boundary::Free,
         })
+    }
+
+    /// Free (an isolated contact, the default) or periodic (the lattice is one period of a
+    /// periodic surface: the normal, tangential and cross operators all periodic; the
+    /// tangential load may then not hold a moment).
+    #[must_use]
+    pub fn with_boundary(mut self, boundary: Boundary) -> Self {
+        self.boundary = boundary;
+        self
     }
 
     /// Put the lattice corner at `origin` (m).
@@ -313,8 +366,15 @@ impl<'a> CoupledProblem<'a> {
         let tol = tolerance_in(SOLVER_NAME, self.tolerance, NormalProblem::TOLERANCE_RANGE)?;
         let (nx, ny, n) = (self.nx, self.ny, self.nx * self.ny);
         let c = Compliance::pair(&self.bodies[0], &self.bodies[1]);
-        let cross = CrossOperator::new(nx, ny, self.cell, &c);
-        let base = NormalProblem::new(nx, ny, self.cell, self.gap, self.bodies, Boundary::Free)?
+        let cross = match self.boundary {
+            Boundary::Free => CrossOperator::new(nx, ny, self.cell, &c),
+            Boundary::Periodic => CrossOperator::periodic(nx, ny, self.cell, &c),
+        };
+        let lattice = PeriodicLattice {
+            cells: (nx, ny),
+            origin: (self.origin.0 + 0.5 * self.cell.0, self.origin.1 + 0.5 * self.cell.1),
+        };
+        let base = NormalProblem::new(nx, ny, self.cell, self.gap, self.bodies, self.boundary)?
             .with_origin(self.origin)
             .with_tolerance(self.tolerance);
         let nop = NormalOperator::new(&base);
@@ -330,7 +390,7 @@ impl<'a> CoupledProblem<'a> {
             for ((g, g0), u) in gap.iter_mut().zip(self.gap).zip(&un) {
                 *g = g0 + u;
             }
-            let np = NormalProblem::new(nx, ny, self.cell, &gap, self.bodies, Boundary::Free)?
+            let np = NormalProblem::new(nx, ny, self.cell, &gap, self.bodies, self.boundary)?
                 .with_origin(self.origin)
                 .with_tolerance(self.tolerance);
             let normal = np.solve_with(&nop, load, p_old.as_deref())?;
@@ -339,10 +399,13 @@ impl<'a> CoupledProblem<'a> {
             let (ux, uy) = cross.traction_from_pressure(&normal.pressure);
             let cells: Vec<usize> = (0..n).filter(|&k| normal.contact[k]).collect();
             let u0: Vec<(f64, f64)> = cells.iter().map(|&k| (ux[k], uy[k])).collect();
-            let tangential = FastProblem::new(&grid, self.bodies, self.friction, self.tangential)?
+            let mut tp = FastProblem::new(&grid, self.bodies, self.friction, self.tangential)?
                 .with_config(config)
-                .with_prescribed_displacement(&u0)?
-                .solve()?;
+                .with_prescribed_displacement(&u0)?;
+            if self.boundary == Boundary::Periodic {
+                tp = tp.with_periodic(lattice)?;
+            }
+            let tangential = tp.solve()?;
             t_its += tangential.info.iterations;
             let mut nqx = vec![0.0; n];
             let mut nqy = vec![0.0; n];

@@ -50,6 +50,12 @@ pub(crate) fn solve(
         .map_err(surface_err)?
         .with_origin((-0.5 * s.size[0], -0.5 * s.size[1]))
         .with_tolerance(tol)
+        .with_boundary(match s.boundary {
+            crate::scene::SurfaceBoundary::Free => stickslip_traction::normal::Boundary::Free,
+            crate::scene::SurfaceBoundary::Periodic => {
+                stickslip_traction::normal::Boundary::Periodic
+            }
+        })
         .solve(nload)
         .map_err(|e| match e {
             stickslip_traction::Error::CapacityExceeded { .. } => solver_err(

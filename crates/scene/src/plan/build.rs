@@ -510,7 +510,6 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     let beta = dundurs_beta(&sub, &ind);
     let periodic = matches!(&normal, ContactNormal::Surface { surface, .. } if surface.boundary == SurfaceBoundary::Periodic);
     let couple = matches!(normal, ContactNormal::Surface { .. })
-        && !periodic
         && beta != 0.0
         && l.friction > 0.0
         && !l.sliding
@@ -530,12 +529,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             format!("dissimilar bodies on a surface (Dundurs beta = {beta:.4}): the coupled normal-tangential solve uses the fast solver"),
         )
     } else if periodic {
-        let neglected = if beta != 0.0 && l.friction > 0.0 && l.tangential != 0.0 {
-            format!("; the Dundurs coupling of the dissimilar bodies (beta = {beta:.4}) is neglected: the coupled solve is free-boundary, so the pressure is that of the normal problem alone")
-        } else {
-            String::new()
-        };
-        (true, format!("a periodic surface: the fast solver with its periodic operator{neglected}"))
+        (true, "a periodic surface: the fast solver with its periodic operator".to_string())
     } else {
         grid_solver(method, elements, both)
     };
