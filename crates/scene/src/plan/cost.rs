@@ -163,8 +163,9 @@ pub const MEMORY_LIMIT_BYTES: u64 = 16 << 30;
 /// times that, so the refusal errs on the safe side.
 const OUTPUT_BYTES_PER_CELL: u64 = 250;
 
-/// FFT products of a fast solve, roughly (for the evaluation count).
-const FAST_PRODUCTS: u64 = 300;
+/// FFT products of a fast solve, roughly (for the evaluation count): 70 to 110 on the
+/// fine lattice of the Mindlin sphere from 256^2 to 1024^2, plus the coarse levels'.
+const FAST_PRODUCTS: u64 = 150;
 
 /// Working memory of the fast solver for a lattice of `cells` cells with `elements` contact
 /// elements: the padded FFT lattice has about 4 cells per lattice cell (each side at least
@@ -176,10 +177,13 @@ fn fast_memory(cells: usize, elements: usize) -> u64 {
 }
 
 /// Seconds of a fast solve on a lattice of `cells` cells: measured on the Mindlin sphere
-/// (T/(fP) = 2/3, 2 shared cores) 1.7 s at 256^2, 12 s at 512^2, 91 s at 1024^2, i.e. about
-/// $1.7\,(N/256^2)^{1.45}$ s (FFT products cost N log N, their count grows with the grid).
+/// (`scenes/fast_mindlin_sphere_256.toml` at grids 256, 512 and 1024, T/(fP) = 2/3, default
+/// tolerance, `solver.solve_seconds` on 2 idle cores) 0.41 s at 256^2, 2.03 s at 512^2,
+/// 10.3 s at 1024^2, i.e. about $0.41\,(N/256^2)^{1.16}$ s (FFT products cost N log N;
+/// with the nested start the number of Newton steps no longer grows with the grid and the
+/// CG iterations grow slowly).
 fn fast_seconds(cells: usize) -> f64 {
-    1.7 * (cells as f64 / 65536.0).powf(1.45)
+    0.41 * (cells as f64 / 65536.0).powf(1.16)
 }
 
 /// Lattice cells of a 3D scene: `grid` x `grid` over the bounding box of a circle or
