@@ -43,7 +43,7 @@
 
 use crate::contract::Load;
 use crate::error::{positive, tolerance_in, Error, Result};
-use crate::fast::{fast_size, FastConfig, FastProblem, FastSolution, PeriodicLattice};
+use crate::fast::{fast_size, signed, FastConfig, FastProblem, FastSolution, PeriodicLattice};
 use crate::normal::{Boundary, NormalLoad, NormalOperator, NormalProblem, NormalSolution};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
@@ -141,11 +141,9 @@ impl CrossOperator {
         let scale = 1.0 / (mx * my) as f64;
         let mut spec = [(); 4].map(|()| vec![C64::new(0.0, 0.0); mx * my]);
         for j in 0..my {
-            let jj = if 2 * j <= my { j as f64 } else { j as f64 - my as f64 };
-            let ky = two_pi * jj / ly;
+            let ky = two_pi * signed(j, my) / ly;
             for i in 0..mx {
-                let ii = if 2 * i <= mx { i as f64 } else { i as f64 - mx as f64 };
-                let kx = two_pi * ii / lx;
+                let kx = two_pi * signed(i, mx) / lx;
                 let k2 = kx * kx + ky * ky;
                 if k2 == 0.0 {
                     continue;

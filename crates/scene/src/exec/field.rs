@@ -193,47 +193,37 @@ pub(crate) fn contact(
             }
             "Hertz ellipse field as one integral per point (Love's potential)".to_string()
         }
-        ContactFieldMethod::Lattice if periodic => {
-            // A periodic surface: the field of the periodic traction on the surface's own
-            // lattice (one period), points taken modulo the period.
-            let (fl, p, qx, qy) = period_lattice(lat)?;
+        ContactFieldMethod::Lattice => {
+            // A periodic surface: the periodic traction on the surface's own lattice (one
+            // period), points taken modulo the period. Otherwise the contact's lattice
+            // extended with unloaded cells over the box.
+            let (fl, p, qx, qy) =
+                if periodic { period_lattice(lat)? } else { extended_lattice(lat, &xs, &ys)? };
+            let boundary = if periodic { FieldBoundary::Periodic } else { FieldBoundary::Free };
             let t = SurfaceTraction { p: &p, qx: &qx, qy: &qy };
             cx.progress("subsurface field", 0, nz);
-            let config =
-                FieldConfig { boundary: FieldBoundary::Periodic, ..FieldConfig::default() };
+            let config = FieldConfig { boundary, ..FieldConfig::default() };
             let field = subsurface_field(fl, f.nu, &t, &zs, config)
                 .map_err(|e| solver_err("subsurface field", e))?;
             cx.progress("subsurface field", nz, nz);
             for layer in &field.layers {
                 for &y in &ys {
                     for &x in &xs {
-                        stresses.push(interpolate_periodic(&fl, layer, x, y));
+                        stresses.push(interpolate(&fl, layer, x, y, periodic));
                     }
                 }
             }
-            format!(
-                "periodic lattice of {} x {} cells of {:.3e} x {:.3e} m (one period of the surface), FFT per depth layer with the periodic half-space transfer, bilinear between cell centres across the period; the mean traction's in-plane stresses (sxx, syy, sxy of the zero frequency) are not determined by a periodic half-space and are left out",
-                fl.nx, fl.ny, fl.hx, fl.hy
-            )
-        }
-        ContactFieldMethod::Lattice => {
-            let (fl, p, qx, qy) = extended_lattice(lat, &xs, &ys)?;
-            let t = SurfaceTraction { p: &p, qx: &qx, qy: &qy };
-            cx.progress("subsurface field", 0, nz);
-            let field = subsurface_field(fl, f.nu, &t, &zs, FieldConfig::default())
-                .map_err(|e| solver_err("subsurface field", e))?;
-            cx.progress("subsurface field", nz, nz);
-            for layer in &field.layers {
-                for &y in &ys {
-                    for &x in &xs {
-                        stresses.push(interpolate(&fl, layer, x, y));
-                    }
-                }
+            if periodic {
+                format!(
+                    "periodic lattice of {} x {} cells of {:.3e} x {:.3e} m (one period of the surface), FFT per depth layer with the periodic half-space transfer, bilinear between cell centres across the period; the mean traction's in-plane stresses (sxx, syy, sxy of the zero frequency) are not determined by a periodic half-space and are left out",
+                    fl.nx, fl.ny, fl.hx, fl.hy
+                )
+            } else {
+                format!(
+                    "lattice of {} x {} cells of {:.3e} x {:.3e} m (the contact's), FFT per depth layer, bilinear between cell centres",
+                    fl.nx, fl.ny, fl.hx, fl.hy
+                )
             }
-            format!(
-                "lattice of {} x {} cells of {:.3e} x {:.3e} m (the contact's), FFT per depth layer, bilinear between cell centres",
-                fl.nx, fl.ny, fl.hx, fl.hy
-            )
         }
     };
     cx.ev.subsurface_field += total as u64;
@@ -357,37 +347,26 @@ fn period_lattice(
     Ok((fl, p, qx, qy))
 }
 
-/// Bilinear interpolation between cell centres of a periodic lattice: the point is taken
-/// modulo the period, and the cells beyond the last centre are the first ones.
-fn interpolate_periodic(fl: &FieldLattice, layer: &StressLayer, x: f64, y: f64) -> Stress3 {
-    let u = ((x - fl.x0) / fl.hx).rem_euclid(fl.nx as f64);
-    let v = ((y - fl.y0) / fl.hy).rem_euclid(fl.ny as f64);
-    let (i0, j0) = ((u.floor() as usize).min(fl.nx - 1), (v.floor() as usize).min(fl.ny - 1));
-    let (s, t) = (u - i0 as f64, v - j0 as f64);
-    let (i1, j1) = ((i0 + 1) % fl.nx, (j0 + 1) % fl.ny);
+/// Bilinear interpolation between cell centres. On a periodic lattice the point is taken
+/// modulo the period and the cells beyond the last centre are the first ones; otherwise it is
+/// clamped to the lattice.
+fn interpolate(fl: &FieldLattice, layer: &StressLayer, x: f64, y: f64, periodic: bool) -> Stress3 {
+    // Lower and upper cell and the weight of the upper one along one axis.
+    let axis = |u: f64, n: usize| -> (usize, usize, f64) {
+        if periodic {
+            let u = u.rem_euclid(n as f64);
+            let i0 = (u.floor() as usize).min(n - 1);
+            (i0, (i0 + 1) % n, u - i0 as f64)
+        } else {
+            let u = u.clamp(0.0, (n - 1) as f64);
+            let i0 = (u.floor() as usize).min(n - 2);
+            (i0, i0 + 1, u - i0 as f64)
+        }
+    };
+    let (i0, i1, s) = axis((x - fl.x0) / fl.hx, fl.nx);
+    let (j0, j1, t) = axis((y - fl.y0) / fl.hy, fl.ny);
     let w = [(1.0 - s) * (1.0 - t), s * (1.0 - t), (1.0 - s) * t, s * t];
     let ks = [j0 * fl.nx + i0, j0 * fl.nx + i1, j1 * fl.nx + i0, j1 * fl.nx + i1];
-    let mut out = Stress3::default();
-    for (wk, &k) in w.iter().zip(&ks) {
-        let c = layer.stress(k);
-        out.xx += wk * c.xx;
-        out.yy += wk * c.yy;
-        out.zz += wk * c.zz;
-        out.xy += wk * c.xy;
-        out.xz += wk * c.xz;
-        out.yz += wk * c.yz;
-    }
-    out
-}
-
-fn interpolate(fl: &FieldLattice, layer: &StressLayer, x: f64, y: f64) -> Stress3 {
-    let u = ((x - fl.x0) / fl.hx).clamp(0.0, (fl.nx - 1) as f64);
-    let v = ((y - fl.y0) / fl.hy).clamp(0.0, (fl.ny - 1) as f64);
-    let (i0, j0) = ((u.floor() as usize).min(fl.nx - 2), (v.floor() as usize).min(fl.ny - 2));
-    let (s, t) = (u - i0 as f64, v - j0 as f64);
-    let w = [(1.0 - s) * (1.0 - t), s * (1.0 - t), (1.0 - s) * t, s * t];
-    let ks =
-        [j0 * fl.nx + i0, j0 * fl.nx + i0 + 1, (j0 + 1) * fl.nx + i0, (j0 + 1) * fl.nx + i0 + 1];
     let mut out = Stress3::default();
     for (wk, &k) in w.iter().zip(&ks) {
         let c = layer.stress(k);

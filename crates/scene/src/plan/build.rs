@@ -22,8 +22,8 @@ use super::recipe::{
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
 use crate::error::ErrorKind;
 use crate::scene::{
-    Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Method, Motion, NormalLoad, Patch,
-    Scene, Substrate, Surface, SurfaceBoundary,
+    Elastic, Ellipse, Geometry, Indenter, Method, Motion, NormalLoad, Patch, Scene, Substrate,
+    Surface, SurfaceBoundary,
 };
 
 /// Plan `scene`: refuse what no solver handles, choose the method of every stage, explain
@@ -461,37 +461,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
                 NormalLoad::HalfWidth(_) => return Err(half_width_refused()),
                 NormalLoad::Force(p) | NormalLoad::FromPatches(p) => SurfaceLoad::Force(p),
             };
-            // A periodic surface carries a tangential force through the fast solver's
-            // periodic operator; a moment (a rotation is not periodic), sliding, rolling and
-            // the modified LP (no periodic images) are refused.
-            if s.boundary == SurfaceBoundary::Periodic && l.friction > 0.0 {
-                if l.moment != 0.0 {
-                    return Err(checks::unsupported(
-                        "load.moment",
-                        "a twisting moment on a periodic surface has no meaning (a rigid rotation is not periodic)",
-                        "use boundary = \"free\" for an isolated contact under a moment, or remove load.moment",
-                    ));
-                }
-                if l.sliding
-                    || matches!(
-                        scene.motion,
-                        Motion::RollingCreepage { .. } | Motion::Rolling { .. }
-                    )
-                {
-                    return Err(checks::unsupported(
-                        "geometry.boundary",
-                        "sliding and rolling on a periodic surface are not solved in this version",
-                        "use boundary = \"free\", or a tangential force below the friction limit",
-                    ));
-                }
-                if l.tangential != 0.0 && scene.solver.method == Method::Lp {
-                    return Err(checks::unsupported(
-                        "solver.method",
-                        "the modified LP solves isolated contacts only (no periodic images)",
-                        "use solver.method = \"fast\" or \"auto\" on a periodic surface",
-                    ));
-                }
-            }
+            checks::periodic_surface(scene)?;
             let tolerance =
                 tolerance_for(scene, "the normal-contact solver", NormalProblem::TOLERANCE_RANGE)?;
             ContactNormal::Surface {
@@ -616,7 +586,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
                 }
                 _ => ContactFieldMethod::Lattice,
             };
-            field_box(scene, &normal, grid)?;
+            checks::field_box(scene, &normal, grid)?;
             Some(ContactField { grid, method, nu: sub.poisson_ratio() })
         }
         None => None,
@@ -641,61 +611,6 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
         },
         grid_reason,
     ))
-}
-
-/// How far from the contact a field box may reach, in contact semi-axes.
-pub const MAX_FIELD_REACH: f64 = 10.0;
-
-/// A 3D field box must stay within [`MAX_FIELD_REACH`] contact semi-axes of the contact
-/// (in plane and in depth): beyond, the stresses are the far field of a point load and a
-/// lattice over the box would be mostly empty.
-fn field_box(scene: &Scene, normal: &ContactNormal, grid: FieldGrid) -> Result<(), Issue> {
-    let sub = substrate_material(&scene.substrate)?;
-    let ind = indenter_material(scene, &sub)?;
-    let e_star = composite_modulus(&sub, &ind);
-    let (ax, ay) = match normal {
-        ContactNormal::Sphere { radius, force, e_star } => {
-            let a = HertzSphere::new(*force, *radius, *e_star)
-                .map_err(|e| invalid("load.normal", e))?
-                .contact_radius();
-            (a, a)
-        }
-        ContactNormal::Ellipse { rx, ry, force, .. } => {
-            let h = stickslip_halfspace::hertz::HertzEllipse::new(*rx, *ry, *force, e_star)
-                .map_err(|e| invalid("load.normal", e))?;
-            (h.semi_axis_x(), h.semi_axis_y())
-        }
-        ContactNormal::EllipseGiven { a, b, .. } => (*a, *b),
-        ContactNormal::Patches(ps) => {
-            let (lo, hi) = crate::scene::patch_bounds(ps);
-            (0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]))
-        }
-        ContactNormal::Surface { surface, .. } => (0.5 * surface.size[0], 0.5 * surface.size[1]),
-    };
-    let unit = match grid.scale {
-        FieldScale::HalfWidth => ax,
-        FieldScale::Metres => 1.0,
-    };
-    let reach = MAX_FIELD_REACH * ax.max(ay);
-    let far = |v: f64| (v * unit).abs() > reach;
-    let z = grid.z.unwrap_or((0.0, 0.0, 1));
-    for (key, (lo, hi, _)) in
-        [("outputs.field.x", grid.x), ("outputs.field.y", grid.y), ("outputs.field.z", z)]
-    {
-        if far(lo) || far(hi) {
-            return Err(checks::issue(
-                ErrorKind::OutOfRange,
-                key,
-                format!(
-                    "the box reaches {:.3e} m from the contact centre; the contact's largest semi-axis is {:.3e} m",
-                    (lo * unit).abs().max((hi * unit).abs()),
-                    ax.max(ay)
-                ),
-                format!("keep the box within {MAX_FIELD_REACH} semi-axes of the contact (scale = \"a\" measures in the semi-axis a along x)"),
-            ));
-        }
-    }
-    Ok(())
 }
 
 // ---------------------------------------------------------------------------------------

@@ -8,9 +8,13 @@ use stickslip_halfspace::material::composite_modulus;
 use stickslip_traction::closed::Lubkin;
 
 use super::build::{along_axis, identical_materials, indenter_material, substrate_material};
+use super::recipe::ContactNormal;
 use super::Issue;
 use crate::error::ErrorKind;
-use crate::scene::{Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate};
+use crate::scene::{
+    Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate, SurfaceBoundary,
+};
+use crate::{FieldGrid, FieldScale};
 
 pub(crate) fn issue(
     kind: ErrorKind,
@@ -475,6 +479,100 @@ pub(crate) fn refuse(scene: &Scene) -> Result<(), Issue> {
                 "solver.method",
                 "the flat-punch field is integrated numerically here",
                 "use method = \"auto\"",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// What a periodic surface cannot carry: a tangential force goes through the fast solver's
+/// periodic operator; a moment (a rotation is not periodic), sliding, rolling and the modified
+/// LP (no periodic images) are refused.
+pub(crate) fn periodic_surface(scene: &Scene) -> Result<(), Issue> {
+    let periodic =
+        matches!(&scene.geometry, Geometry::Surface(s) if s.boundary == SurfaceBoundary::Periodic);
+    let l = &scene.load;
+    if periodic && l.friction > 0.0 {
+        if l.moment != 0.0 {
+            return Err(unsupported(
+                "load.moment",
+                "a twisting moment on a periodic surface has no meaning (a rigid rotation is not periodic)",
+                "use boundary = \"free\" for an isolated contact under a moment, or remove load.moment",
+            ));
+        }
+        if l.sliding
+            || matches!(scene.motion, Motion::RollingCreepage { .. } | Motion::Rolling { .. })
+        {
+            return Err(unsupported(
+                "geometry.boundary",
+                "sliding and rolling on a periodic surface are not solved in this version",
+                "use boundary = \"free\", or a tangential force below the friction limit",
+            ));
+        }
+        if l.tangential != 0.0 && scene.solver.method == Method::Lp {
+            return Err(unsupported(
+                "solver.method",
+                "the modified LP solves isolated contacts only (no periodic images)",
+                "use solver.method = \"fast\" or \"auto\" on a periodic surface",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// How far from the contact a field box may reach, in contact semi-axes.
+pub const MAX_FIELD_REACH: f64 = 10.0;
+
+/// A 3D field box must stay within [`MAX_FIELD_REACH`] contact semi-axes of the contact
+/// (in plane and in depth): beyond, the stresses are the far field of a point load and a
+/// lattice over the box would be mostly empty.
+pub(crate) fn field_box(
+    scene: &Scene,
+    normal: &ContactNormal,
+    grid: FieldGrid,
+) -> Result<(), Issue> {
+    let sub = substrate_material(&scene.substrate)?;
+    let ind = indenter_material(scene, &sub)?;
+    let e_star = composite_modulus(&sub, &ind);
+    let (ax, ay) = match normal {
+        ContactNormal::Sphere { radius, force, e_star } => {
+            let a = HertzSphere::new(*force, *radius, *e_star)
+                .map_err(|e| invalid("load.normal", e))?
+                .contact_radius();
+            (a, a)
+        }
+        ContactNormal::Ellipse { rx, ry, force, .. } => {
+            let h = stickslip_halfspace::hertz::HertzEllipse::new(*rx, *ry, *force, e_star)
+                .map_err(|e| invalid("load.normal", e))?;
+            (h.semi_axis_x(), h.semi_axis_y())
+        }
+        ContactNormal::EllipseGiven { a, b, .. } => (*a, *b),
+        ContactNormal::Patches(ps) => {
+            let (lo, hi) = crate::scene::patch_bounds(ps);
+            (0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]))
+        }
+        ContactNormal::Surface { surface, .. } => (0.5 * surface.size[0], 0.5 * surface.size[1]),
+    };
+    let unit = match grid.scale {
+        FieldScale::HalfWidth => ax,
+        FieldScale::Metres => 1.0,
+    };
+    let reach = MAX_FIELD_REACH * ax.max(ay);
+    let far = |v: f64| (v * unit).abs() > reach;
+    let z = grid.z.unwrap_or((0.0, 0.0, 1));
+    for (key, (lo, hi, _)) in
+        [("outputs.field.x", grid.x), ("outputs.field.y", grid.y), ("outputs.field.z", z)]
+    {
+        if far(lo) || far(hi) {
+            return Err(issue(
+                ErrorKind::OutOfRange,
+                key,
+                format!(
+                    "the box reaches {:.3e} m from the contact centre; the contact's largest semi-axis is {:.3e} m",
+                    (lo * unit).abs().max((hi * unit).abs()),
+                    ax.max(ay)
+                ),
+                format!("keep the box within {MAX_FIELD_REACH} semi-axes of the contact (scale = \"a\" measures in the semi-axis a along x)"),
             ));
         }
     }

@@ -81,7 +81,7 @@ mod newton;
 mod operator;
 mod solver;
 
-pub(crate) use operator::fast_size;
+pub(crate) use operator::{fast_size, signed};
 pub use operator::{ConvScratch, PeriodicLattice, TensorConvolution};
 pub(crate) use solver::{resultant_moment, SOLVER_NAME};
 pub use solver::{

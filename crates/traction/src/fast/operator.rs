@@ -527,20 +527,13 @@ impl TensorConvolution {
             seen[c] = true;
             cell.push(c);
         }
-        let mut op = Self::scalar_plan(nx, ny, nx, ny);
-        op.n = cell.len();
-        let (row_items, row_ptr) = rows_of(&cell, nx, ny);
-        op.cell = cell;
-        op.row_items = row_items;
-        op.row_ptr = row_ptr;
+        let mut op = Self::on_cells(nx, ny, nx, ny, cell);
         let a = c.one_minus_nu + c.nu;
         let b = c.nu;
         let (lx, ly) = (nx as f64 * grid.hx, ny as f64 * grid.hy);
         let two_pi = 2.0 * std::f64::consts::PI;
         let sym = |i: usize, j: usize| -> [f64; 3] {
-            let ii = if 2 * i <= nx { i as f64 } else { i as f64 - nx as f64 };
-            let jj = if 2 * j <= ny { j as f64 } else { j as f64 - ny as f64 };
-            let (kx, ky) = (two_pi * ii / lx, two_pi * jj / ly);
+            let (kx, ky) = (two_pi * signed(i, nx) / lx, two_pi * signed(j, ny) / ly);
             let k = kx.hypot(ky);
             if k == 0.0 {
                 return [0.0; 3];
@@ -550,30 +543,8 @@ impl TensorConvolution {
         };
         // The kernel at zero offset (the mean of the symbol over the whole spectrum): the
         // self-influence the Newton system's diagonal uses.
-        let mut k0 = [0.0; 3];
-        for i in 0..nx {
-            for j in 0..ny {
-                let v = sym(i, j);
-                for (a, b) in k0.iter_mut().zip(v) {
-                    *a += b;
-                }
-            }
-        }
-        op.self_term = k0.map(|v| v / (nx * ny) as f64);
-        let mxh = op.mxh;
-        let (mut kxx, mut kxy, mut kyy) =
-            (vec![0.0; mxh * ny], vec![0.0; mxh * ny], vec![0.0; mxh * ny]);
-        for i in 0..mxh {
-            for j in 0..ny {
-                let v = sym(i, j);
-                kxx[i * ny + j] = v[0];
-                kxy[i * ny + j] = v[1];
-                kyy[i * ny + j] = v[2];
-            }
-        }
-        op.kxx = kxx;
-        op.kxy = kxy;
-        op.kyy = kyy;
+        op.self_term = op.symbol_mean(&sym);
+        op.set_symbol(1.0, &sym);
         Ok(op)
     }
 }
@@ -589,12 +560,7 @@ impl TensorConvolution {
     pub(crate) fn inverse_symbol(grid: &ContactGrid, c: &Compliance, k0xx: f64) -> Result<Self> {
         let (nx, ny, _, _, cell) = grid.lattice_cells()?;
         let (mx, my) = (fast_size(nx), fast_size(ny));
-        let mut op = Self::scalar_plan(nx, ny, mx, my);
-        op.n = cell.len();
-        let (row_items, row_ptr) = rows_of(&cell, nx, ny);
-        op.cell = cell;
-        op.row_items = row_items;
-        op.row_ptr = row_ptr;
+        let mut op = Self::on_cells(nx, ny, mx, my, cell);
         let a = c.one_minus_nu + c.nu;
         let b = c.nu;
         let gamma = 1.0 / (a - b) - 1.0 / a;
@@ -602,10 +568,8 @@ impl TensorConvolution {
         let two_pi = 2.0 * std::f64::consts::PI;
         let kmin = (two_pi / (mx as f64 * hx)).min(two_pi / (my as f64 * hy));
         let sym = |i: usize, j: usize| -> [f64; 3] {
-            let ii = if 2 * i <= mx { i as f64 } else { i as f64 - mx as f64 };
-            let jj = if 2 * j <= my { j as f64 } else { j as f64 - my as f64 };
-            let kx = 2.0 * (0.5 * two_pi * ii / mx as f64).sin() / hx;
-            let ky = 2.0 * (0.5 * two_pi * jj / my as f64).sin() / hy;
+            let kx = 2.0 * (0.5 * two_pi * signed(i, mx) / mx as f64).sin() / hx;
+            let ky = 2.0 * (0.5 * two_pi * signed(j, my) / my as f64).sin() / hy;
             let k = kx.hypot(ky);
             if k == 0.0 {
                 return [kmin / a, 0.0, kmin / a];
@@ -613,27 +577,58 @@ impl TensorConvolution {
             let (ex, ey) = (kx / k, ky / k);
             [k * (1.0 / a + gamma * ex * ex), k * gamma * ex * ey, k * (1.0 / a + gamma * ey * ey)]
         };
-        let mut mean = 0.0;
-        for i in 0..mx {
-            for j in 0..my {
-                mean += sym(i, j)[0];
+        let scale = 1.0 / (k0xx * op.symbol_mean(&sym)[0]);
+        op.set_symbol(scale, &sym);
+        Ok(op)
+    }
+
+    /// An operator of `mx` x `my` FFTs (no kernel yet) for the elements in the lattice cells
+    /// `cell` of an `nx` x `ny` lattice.
+    fn on_cells(nx: usize, ny: usize, mx: usize, my: usize, cell: Vec<usize>) -> Self {
+        let mut op = Self::scalar_plan(nx, ny, mx, my);
+        op.n = cell.len();
+        let (row_items, row_ptr) = rows_of(&cell, nx, ny);
+        op.cell = cell;
+        op.row_items = row_items;
+        op.row_ptr = row_ptr;
+        op
+    }
+
+    /// The mean of a tensor symbol `sym(i, j)` over the whole $M_x\times M_y$ spectrum (the
+    /// kernel at zero offset).
+    fn symbol_mean(&self, sym: &impl Fn(usize, usize) -> [f64; 3]) -> [f64; 3] {
+        let mut sum = [0.0; 3];
+        for i in 0..self.mx {
+            for j in 0..self.my {
+                for (a, b) in sum.iter_mut().zip(sym(i, j)) {
+                    *a += b;
+                }
             }
         }
-        mean /= (mx * my) as f64;
-        let scale = 1.0 / (k0xx * mean);
-        let (mxh, mut kxx, mut kxy, mut kyy) = (op.mxh, vec![], vec![], vec![]);
+        sum.map(|v| v / (self.mx * self.my) as f64)
+    }
+
+    /// Store `scale * sym(i, j)` as the kernel spectra (the half spectrum of the real FFT).
+    fn set_symbol(&mut self, scale: f64, sym: &impl Fn(usize, usize) -> [f64; 3]) {
+        let (mxh, my) = (self.mxh, self.my);
+        let mut k = [vec![0.0; mxh * my], vec![0.0; mxh * my], vec![0.0; mxh * my]];
         for i in 0..mxh {
             for j in 0..my {
-                let v = sym(i, j);
-                kxx.push(scale * v[0]);
-                kxy.push(scale * v[1]);
-                kyy.push(scale * v[2]);
+                for (kc, v) in k.iter_mut().zip(sym(i, j)) {
+                    kc[i * my + j] = scale * v;
+                }
             }
         }
-        op.kxx = kxx;
-        op.kxy = kxy;
-        op.kyy = kyy;
-        Ok(op)
+        [self.kxx, self.kxy, self.kyy] = k;
+    }
+}
+
+/// FFT index `i` of a length-`m` transform as a signed frequency (`i - m` above `m / 2`).
+pub(crate) fn signed(i: usize, m: usize) -> f64 {
+    if 2 * i <= m {
+        i as f64
+    } else {
+        i as f64 - m as f64
     }
 }
 
