@@ -19,7 +19,8 @@ use std::time::Instant;
 use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
-use stickslip_traction::{Boundary, NormalLoad, NormalOperator, NormalProblem, Tolerance};
+use stickslip_normal::{Boundary, NormalLoad, NormalProblem};
+use stickslip_traction::Tolerance;
 
 /// splitmix64 in [0, 1).
 struct Rng(u64);
@@ -121,7 +122,7 @@ fn bench(c: &mut Criterion) {
             after.saturating_sub(before) as f64 / (8.0 * n as f64),
         );
         // The cost of one FFT product alone (the solve is about `products` of them).
-        let op = NormalOperator::new(&problem);
+        let op = problem.operator();
         let mut scratch = op.make_scratch();
         let mut u = vec![0.0; n];
         let (c1, t1) = (cpu_seconds(), Instant::now());

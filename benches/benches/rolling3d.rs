@@ -6,8 +6,10 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::time::Instant;
 use stickslip_halfspace::Material;
-use stickslip_traction::rolling::{fastsim, kalker, Creepage, SteadyRolling};
-use stickslip_traction::ContactGrid;
+use stickslip_lattice::ContactGrid;
+use stickslip_rolling::{
+    steady3d::fastsim, steady3d::kalker, steady3d::Creepage, steady3d::SteadyRolling,
+};
 
 const G: f64 = 8e10;
 const NU: f64 = 0.28;

@@ -14,7 +14,9 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use std::time::Instant;
 use stickslip_halfspace::hertz::ellipse_field::HertzLoadField;
 use stickslip_halfspace::hertz::sphere_field::sliding_sphere_stress;
-use stickslip_traction::field::{subsurface_field, FieldConfig, Lattice, SurfaceTraction};
+use stickslip_lattice::{
+    field::subsurface_field, field::FieldConfig, field::Lattice, field::SurfaceTraction,
+};
 
 const NU: f64 = 0.3;
 

@@ -15,8 +15,9 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Instant;
 use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_halfspace::Material;
+use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{ContactGrid, ElementState, FastProblem, Load};
+use stickslip_traction::{ElementState, FastProblem, Load};
 
 const P: f64 = 2160.0;
 const F: f64 = 0.1;

@@ -7,8 +7,9 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
 use stickslip_halfspace::Material;
+use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{ContactGrid, Load, TractionProblem};
+use stickslip_traction::{Load, TractionProblem};
 
 const P: f64 = 2160.0;
 const T: f64 = 144.0;

@@ -23,10 +23,11 @@ use std::f64::consts::PI;
 use std::io::Write;
 use stickslip_benches::fast_sweep::{combined_case, force_case, moment_case, Outcome, F, RATIOS};
 use stickslip_halfspace::Material;
+use stickslip_lattice::ContactGrid;
 use stickslip_quad::Tolerance;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::fast::{FastConfig, FastProblem, TractionDirections};
-use stickslip_traction::{ContactGrid, ElementState, Load};
+use stickslip_traction::{fast::FastConfig, fast::FastProblem, fast::TractionDirections};
+use stickslip_traction::{ElementState, Load};
 
 /// Peak resident memory since the last reset, MiB (Linux; `None` elsewhere).
 fn peak_mib() -> Option<f64> {

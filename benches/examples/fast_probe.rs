@@ -8,8 +8,9 @@
 use std::time::Instant;
 use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_halfspace::Material;
+use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{ContactGrid, ElementState, FastConfig, FastProblem, Load, Tolerance};
+use stickslip_traction::{ElementState, FastConfig, FastProblem, Load, Tolerance};
 
 fn main() {
     let across: usize = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(256);

@@ -11,9 +11,12 @@
 use std::f64::consts::PI;
 use std::time::Instant;
 use stickslip_halfspace::Material;
-use stickslip_traction::closed::{Lubkin, Mindlin};
-use stickslip_traction::fast::{FastConfig, FastProblem, FastSolution, TractionDirections};
-use stickslip_traction::{ContactGrid, Load};
+use stickslip_lattice::ContactGrid;
+use stickslip_traction::Load;
+use stickslip_traction::{closed::Lubkin, closed::Mindlin};
+use stickslip_traction::{
+    fast::FastConfig, fast::FastProblem, fast::FastSolution, fast::TractionDirections,
+};
 
 /// Tolerances of the sweep, each with its reason. `h` is the cell width, `a` the contact
 /// radius.

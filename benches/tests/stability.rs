@@ -18,14 +18,13 @@ use stickslip_halfspace::hertz::HertzEllipse;
 use stickslip_halfspace::mcewen::HertzTraction;
 use stickslip_halfspace::rectangle::{inv_r_integral, Rect};
 use stickslip_halfspace::Material;
+use stickslip_lattice::{ContactGrid, InfluenceModel};
 use stickslip_quad::{gauss_kronrod, tanh_sinh, AdaptiveConfig, Tolerance};
 use stickslip_rolling::{carter, solve, CarterParams, GoryachevaParams, Regime, Response};
 use stickslip_special as sp;
-use stickslip_traction::closed::{Cattaneo, Mindlin};
 use stickslip_traction::lp::modified_lp;
-use stickslip_traction::{
-    ContactGrid, ElementState, InfluenceModel, Load, LpConfig, TractionProblem, TractionSolution,
-};
+use stickslip_traction::{closed::Cattaneo, closed::Mindlin};
+use stickslip_traction::{ElementState, Load, LpConfig, TractionProblem, TractionSolution};
 
 /// Tolerances of the suite, each with its reason.
 mod tol {

@@ -33,8 +33,8 @@
 use stickslip_benches::fast_sweep::{
     body, circle, combined_case, force_case, moment_case, Outcome, F, RATIOS,
 };
-use stickslip_traction::fast::{FastProblem, TractionDirections};
 use stickslip_traction::Load;
+use stickslip_traction::{fast::FastProblem, fast::TractionDirections};
 
 const GRIDS: [usize; 5] = [16, 32, 64, 128, 256];
 

@@ -42,6 +42,9 @@ pub enum Error {
     /// From the traction crate.
     #[error("traction: {0}")]
     Traction(#[from] stickslip_traction::Error),
+    /// From `stickslip-lattice` (contact grids).
+    #[error(transparent)]
+    Lattice(#[from] stickslip_lattice::Error),
     /// From the rolling crate.
     #[error("rolling: {0}")]
     Rolling(#[from] stickslip_rolling::Error),

@@ -17,12 +17,10 @@ use std::f64::consts::PI;
 use stickslip_halfspace::hertz::HertzSphere;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
+use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
-use stickslip_traction::closed::{Cattaneo, Deresiewicz, Lubkin, Mindlin};
-use stickslip_traction::{
-    ContactGrid, ElementState, InfluenceModel, Load, Patch, PatchPressure, Regime, Shape,
-    TractionProblem, TractionSolution,
-};
+use stickslip_traction::{closed::Cattaneo, closed::Deresiewicz, closed::Lubkin, closed::Mindlin};
+use stickslip_traction::{ElementState, Load, Regime, TractionProblem, TractionSolution};
 
 const SEED: &str = "002";
 

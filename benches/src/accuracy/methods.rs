@@ -6,11 +6,12 @@ use std::f64::consts::PI;
 use stickslip_graded::{Accuracy, GradedMaterial, StressField, SurfaceLoad};
 use stickslip_halfspace::hertz::HertzEllipse;
 use stickslip_halfspace::Material;
+use stickslip_lattice::{ContactGrid, InfluenceModel};
 use stickslip_quad::battery::{self, Kind, Method};
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 use stickslip_rolling::{solve, GoryachevaParams, StressConfig};
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{ContactGrid, InfluenceModel, Load, TractionProblem};
+use stickslip_traction::{Load, TractionProblem};
 
 /// Relative error, absolute when the reference is zero.
 fn rel(got: f64, want: f64) -> f64 {
@@ -399,7 +400,7 @@ pub(super) fn lp_mindlin(mode: Mode) -> MethodReport {
 
 /// The fast solver (FFT products, semismooth Newton) on Hertz circles against Mindlin.
 pub(super) fn fast_mindlin(mode: Mode, notes: &mut Vec<String>) -> MethodReport {
-    use stickslip_traction::fast::{FastProblem, TractionDirections};
+    use stickslip_traction::{fast::FastProblem, fast::TractionDirections};
     let across: Vec<usize> = match mode {
         Mode::Quick => vec![16, 32],
         Mode::Full => vec![16, 32, 64, 128, 256],
@@ -524,7 +525,7 @@ fn rolling_ellipse(a: f64, b: f64, n: usize, load: f64) -> ContactGrid {
 /// Exact 3D steady rolling in the linear (no-slip) limit against Kalker's creepage
 /// coefficients: the grid convergence of C11, C22, C23 (a/b = 1, nu = 0.25).
 pub(super) fn rolling3d_exact(mode: Mode) -> MethodReport {
-    use stickslip_traction::rolling::{kalker, Creepage, SteadyRolling};
+    use stickslip_rolling::{steady3d::kalker, steady3d::Creepage, steady3d::SteadyRolling};
     let nu = 0.25;
     let g = 8e10;
     let m = Material::new(2.0 * g * (1.0 + nu), nu).expect("material");
@@ -583,7 +584,7 @@ pub(super) fn rolling3d_exact(mode: Mode) -> MethodReport {
         knob: Knob::GridSize,
         reference: format!(
             "Kalker's tabulated creepage coefficients at a/b = 1, nu = 0.25 (C11 = {}, C22 = \
-             {}, C23 = {}; `stickslip_traction::rolling::kalker`, Kalker 1990 Table E3)",
+             {}, C23 = {}; `stickslip_rolling::steady3d::kalker`, Kalker 1990 Table E3)",
             k.c11, k.c22, k.c23
         ),
         error_measure: "max over C11, C22, C23 of the relative deviation from the table".into(),
@@ -596,8 +597,9 @@ pub(super) fn rolling3d_exact(mode: Mode) -> MethodReport {
 /// FASTSIM or Polach against the exact theory on the same grid: the largest force error over
 /// shapes and creepages, relative to fN.
 pub(super) fn rolling3d_approx(mode: Mode, polach: bool) -> MethodReport {
-    use stickslip_traction::rolling::{
-        fastsim, polach as law, Creepage, SteadyRolling, FASTSIM_FORCE_ERROR, POLACH_FORCE_ERROR,
+    use stickslip_rolling::{
+        steady3d::fastsim, steady3d::polach as law, steady3d::Creepage, steady3d::SteadyRolling,
+        steady3d::FASTSIM_FORCE_ERROR, steady3d::POLACH_FORCE_ERROR,
     };
     let (nu, g, f, load) = (0.28, 8e10, 0.3, 1e4);
     let m = Material::new(2.0 * g * (1.0 + nu), nu).expect("material");

@@ -37,7 +37,32 @@ pub enum Error {
         /// The integrator's report (carries the best estimate when not converged).
         source: stickslip_quad::Error,
     },
+    /// The contact grid of a 3D rolling problem has no element.
+    #[error("the contact grid is empty: {reason}")]
+    EmptyGrid {
+        /// Why no element was produced.
+        reason: &'static str,
+    },
+    /// An iterative solver of the 3D theory reached its budget before its residual met the
+    /// tolerance.
+    #[error("{solver} did not converge: relative residual {residual:e} > tolerance {tolerance:e} after {iterations} iterations (raise max_iterations or the tolerance)")]
+    NotConverged {
+        /// Which solver.
+        solver: &'static str,
+        /// Iterations performed.
+        iterations: usize,
+        /// Residual reached.
+        residual: f64,
+        /// Requested tolerance.
+        tolerance: f64,
+    },
+    /// An error of the contact lattice (grid, influence operator), with its own message.
+    #[error(transparent)]
+    Lattice(#[from] stickslip_lattice::Error),
 }
+
+/// Shorthand for `Result<T, Error>`.
+pub type Result<T, E = Error> = core::result::Result<T, E>;
 
 /// Check that `value` is finite and strictly positive.
 pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64, Error> {

@@ -1,11 +1,15 @@
-//! Rolling contact with stick and slip: Carter's elastic cylinders and Goryacheva's
-//! viscoelastic cylinder rolling on a base of the same material (plane strain).
+//! Rolling contact with stick and slip: every rolling theory of stickslip, in 2D (plane
+//! strain: Carter's elastic cylinders, Goryacheva's viscoelastic cylinder) and in 3D
+//! (steady rolling of any contact patch with longitudinal and lateral creepage and spin).
 //!
 //! - [`carter`](mod@carter): elastic cylinders, closed form (half-width, stick zone, creep law, tractions).
 //! - [`goryacheva`]: the viscoelastic problem of Goryacheva, PMM 37(5) 1973 (seed 001), in the
 //!   corrected forms of `docs/FORMULAS.md` section D, solved through scaled
 //!   equations that contain only the bounded ratios $I_1/I_0$ and $K_0/K_1$, with analytic
 //!   brackets for both roots; pressure and shear (eqs 12, 13) by quadrature.
+//! - [`steady3d`]: three-dimensional steady rolling on a contact grid: the exact theory
+//!   ([`SteadyRolling`], semismooth Newton with FFT products), FASTSIM, Polach's law and
+//!   Kalker's creepage coefficients.
 //! - [`sweep`]: the seed's claim $l\approx\sqrt{8KRP\beta/\alpha}$ over its stated grid.
 //!
 //! ```
@@ -34,13 +38,15 @@ pub mod goryacheva;
 mod kernel;
 mod ratios;
 mod roots;
+pub mod steady3d;
 pub mod sweep;
 
 pub use carter::{carter, carter_creep_force, compliance, CarterParams, CarterSolution};
-pub use error::Error;
+pub use error::{Error, Result};
 pub use goryacheva::{
     contact_length, solve, ContactLength, GoryachevaParams, GoryachevaSolution, Response, SolveInfo,
 };
+pub use steady3d::{Creepage, RollingInfo, RollingMethod, RollingSolution, SteadyRolling};
 pub use stickslip_quad::{Estimate, Tolerance};
 pub use sweep::{claim_sweep, ClaimRow, SweepMaterial};
 

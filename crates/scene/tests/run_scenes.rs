@@ -442,8 +442,9 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
         "wheel_rail_creepage_spin.toml" | "wheel_rail_fastsim.toml" => {
             // The scene's theory against the other one on the same Hertz grid: the exact
             // theory and FASTSIM differ by at most FASTSIM's measured force error (0.1 fN).
-            use stickslip_traction::rolling::{
-                fastsim, Creepage, SteadyRolling, FASTSIM_FORCE_ERROR,
+            use stickslip_rolling::{
+                steady3d::fastsim, steady3d::Creepage, steady3d::SteadyRolling,
+                steady3d::FASTSIM_FORCE_ERROR,
             };
             let stickslip_scene::Motion::RollingCreepage { longitudinal, lateral, spin, .. } =
                 scene.motion
@@ -457,7 +458,7 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             let n = scene.solver.grid;
             let (a, b) = (c.a, c.b);
             let h = 2.0 * a.max(b) / n as f64;
-            let grid = stickslip_traction::ContactGrid::hertz_ellipse(
+            let grid = stickslip_lattice::ContactGrid::hertz_ellipse(
                 a,
                 b,
                 c.normal_load,

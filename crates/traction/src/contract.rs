@@ -20,12 +20,13 @@
 //! [`crate::TractionSolution::excess_load`] for any load beyond it.)
 
 use crate::error::{non_negative, positive, tolerance_in, Error, Result};
-use crate::fast::{FastConfig, FastProblem, PeriodicLattice, TractionDirections};
-use crate::grid::ContactGrid;
-use crate::influence::InfluenceModel;
+use crate::fast::{FastConfig, FastProblem, TractionDirections};
 use crate::lp::LpConfig;
 use crate::solve::{DirectionAssumption, ElementState, PatchSummary, Regime, TractionProblem};
 use stickslip_halfspace::Material;
+use stickslip_lattice::influence::InfluenceModel;
+use stickslip_lattice::ContactGrid;
+use stickslip_lattice::PeriodicLattice;
 use stickslip_quad::Tolerance;
 
 /// Which kind of load: used by [`Error::CapacityExceeded`] and friends to say which load to
@@ -415,10 +416,12 @@ impl GridSolution {
             return Ok(0.5);
         }
         let op = match &self.periodic {
-            Some(lattice) => {
-                crate::fast::TensorConvolution::periodic(grid, &bodies[0].compliance(), lattice)?
-            }
-            None => crate::fast::TensorConvolution::new(
+            Some(lattice) => stickslip_lattice::TensorConvolution::periodic(
+                grid,
+                &bodies[0].compliance(),
+                lattice,
+            )?,
+            None => stickslip_lattice::TensorConvolution::new(
                 grid,
                 &bodies[0].compliance(),
                 InfluenceModel::default(),

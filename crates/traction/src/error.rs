@@ -23,18 +23,6 @@ pub enum Error {
         /// Why no element was produced.
         reason: &'static str,
     },
-    /// Two patches of a multi-patch grid cover the same element.
-    #[error("patches {first} and {second} overlap at element centre ({x:e}, {y:e})")]
-    OverlappingPatches {
-        /// Index of the first patch.
-        first: usize,
-        /// Index of the second patch.
-        second: usize,
-        /// x of an element centre covered by both.
-        x: f64,
-        /// y of an element centre covered by both.
-        y: f64,
-    },
     /// Two arrays that must have the same length do not.
     #[error("length mismatch for {name}: expected {expected}, got {got}")]
     LengthMismatch {
@@ -126,19 +114,13 @@ pub enum Error {
         /// Index of the failing pivot.
         index: usize,
     },
-    /// The computed contact covers fewer lattice cells than the normal solver accepts as
-    /// resolved ([`crate::normal::NormalProblem::with_min_contact_cells`]): refine the lattice
-    /// (or raise the load).
-    #[error("the contact covers {cells} lattice cells, fewer than the {minimum} needed to resolve it: refine the lattice (smaller cells) or raise the load")]
-    UnresolvedContact {
-        /// Contact cells found.
-        cells: usize,
-        /// The minimum accepted.
-        minimum: usize,
-    },
     /// An error from the half-space crate (influence coefficients, Hertz).
     #[error("half-space: {0}")]
     Halfspace(String),
+    /// An error of the lattice below (grid construction, influence operators), with its own
+    /// message.
+    #[error(transparent)]
+    Lattice(#[from] stickslip_lattice::Error),
     /// An error from the special-function crate.
     #[error("special function: {0}")]
     Special(String),

@@ -1,17 +1,16 @@
-//! Tangential traction and microslip in frictional contacts.
+//! Tangential traction and microslip of a contact whose pressure is known: stick and slip
+//! zones under a tangential force or a twisting moment.
 //!
 //! * [`closed`]: Mindlin (circle), Cattaneo (ellipse), Mindlin–Deresiewicz (unloading,
 //!   hysteresis, energy per cycle) and Lubkin (torsion) closed forms, FORMULAS.md E and G;
-//! * [`grid`]: contact grids of rectangular elements with their normal pressure;
-//! * [`influence`]: tangential influence matrices from the exact uniform-rectangle formula
-//!   (FORMULAS.md F) or the seed's point-load approximation;
 //! * [`lp`]: the modified linear program of seed 002, Fig. 3.5;
-//! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid;
-//! * [`fast`]: the fast solver (both traction components free, FFT products);
-//! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]);
-//! * [`rolling`]: 3D steady rolling with creepage and spin (exact, FASTSIM, Polach);
-//! * [`normal`]: normal contact of any surface on a lattice (constrained conjugate
-//!   gradients, free or periodic), whose contact feeds the tangential solvers.
+//! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid, by the
+//!   modified LP;
+//! * [`fast`]: the fast solver (both traction components free, FFT products, nested start);
+//! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]).
+//!
+//! The grids, influence coefficients and FFT operators they work on are those of
+//! `stickslip-lattice`; the contact a normal solve finds (`stickslip-normal`) feeds them.
 //!
 //! ```
 //! use stickslip_traction::closed::Mindlin;
@@ -29,31 +28,17 @@
 
 pub mod closed;
 pub mod contract;
-pub mod coupled;
 pub mod error;
 pub mod fast;
-pub mod field;
-pub mod grid;
-pub mod influence;
 pub mod lp;
-pub mod normal;
-pub mod rolling;
-pub mod roughness;
 pub mod solve;
 
 pub use contract::{
     FastSolver, GridProblem, GridSolution, GridSolver, Load, LoadKind, ModifiedLp, SolverInfo,
 };
 pub use error::{Error, Result};
-pub use fast::{
-    FastConfig, FastProblem, FastSolution, PeriodicLattice, TractionDirections, WarmStart,
-};
-pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
-pub use influence::InfluenceModel;
+pub use fast::{FastConfig, FastProblem, FastSolution, TractionDirections, WarmStart};
 pub use lp::{LpConfig, LpSolution};
-pub use normal::{
-    Boundary, NormalInfo, NormalLoad, NormalOperator, NormalProblem, NormalScratch, NormalSolution,
-};
 pub use solve::{
     DirectionAssumption, ElementState, PatchSummary, Regime, SolveInfo, TractionProblem,
     TractionSolution,

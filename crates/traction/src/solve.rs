@@ -4,11 +4,11 @@
 
 use crate::contract::{check_pair, Load};
 use crate::error::{Error, Result};
-use crate::grid::ContactGrid;
-use crate::influence::{projected_matrix, tensor_matrix, Compliance, InfluenceModel};
 use crate::lp::{modified_lp, LpConfig};
 use std::time::Instant;
 use stickslip_halfspace::Material;
+use stickslip_lattice::influence::{projected_matrix, tensor_matrix, Compliance, InfluenceModel};
+use stickslip_lattice::ContactGrid;
 
 /// Directions, mode, load magnitude and the assumption record, as prepared for the LP.
 type Setup = (Vec<(f64, f64)>, Vec<f64>, f64, DirectionAssumption);

@@ -7,7 +7,7 @@ use common::{steel, tol};
 use std::f64::consts::PI;
 use stickslip_halfspace::Material;
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, GaussJacobi, GaussLegendre, Rule, Tolerance};
-use stickslip_traction::closed::{Cattaneo, Deresiewicz, Lubkin, Mindlin};
+use stickslip_traction::{closed::Cattaneo, closed::Deresiewicz, closed::Lubkin, closed::Mindlin};
 
 /// $\int_0^{s_R}\sqrt{\gamma+\beta s-\alpha s^2}\,ds$ from an interior point ($\gamma > 0$):
 /// the quadratic is $\alpha(s_R-s)(s-s_m)$ with $s_m<0$, so Gauss–Jacobi with weight

@@ -5,9 +5,10 @@
 //! each typed error must come back as its variant.
 
 use stickslip_halfspace::Material;
+use stickslip_lattice::ContactGrid;
 use stickslip_traction::{
-    ContactGrid, ElementState, Error, FastSolver, GridProblem, GridSolution, GridSolver, Load,
-    LoadKind, ModifiedLp, Tolerance, TractionDirections,
+    ElementState, Error, FastSolver, GridProblem, GridSolution, GridSolver, Load, LoadKind,
+    ModifiedLp, Tolerance, TractionDirections,
 };
 
 /// The stated tolerances of the checks below.

@@ -6,12 +6,11 @@ use common::{extended, hertz_radius, steel, tol};
 use std::f64::consts::PI;
 use std::time::Instant;
 use stickslip_halfspace::Material;
-use stickslip_traction::closed::{Cattaneo, Mindlin};
-use stickslip_traction::influence::projected_matrix;
-use stickslip_traction::lp::{modified_lp, LpConfig};
-use stickslip_traction::{
-    ContactGrid, ElementState, InfluenceModel, Load, Regime, TractionProblem,
-};
+use stickslip_lattice::influence::projected_matrix;
+use stickslip_lattice::{ContactGrid, InfluenceModel};
+use stickslip_traction::{closed::Cattaneo, closed::Mindlin};
+use stickslip_traction::{lp::modified_lp, lp::LpConfig};
+use stickslip_traction::{ElementState, Load, Regime, TractionProblem};
 
 fn example1(n_across: usize, model: InfluenceModel) -> (usize, f64, f64, f64, f64, f64) {
     let (p, t, f) = (2160.0, 144.0, 0.1);

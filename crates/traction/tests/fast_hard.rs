@@ -7,11 +7,12 @@
 mod fast_common;
 use fast_common::{steel, tol};
 use std::f64::consts::PI;
-use stickslip_traction::closed::{Lubkin, Mindlin};
-use stickslip_traction::fast::TensorConvolution;
+use stickslip_lattice::TensorConvolution;
+use stickslip_lattice::{ContactGrid, Patch, PatchPressure, Shape};
+use stickslip_traction::{closed::Lubkin, closed::Mindlin};
 use stickslip_traction::{
-    ContactGrid, ElementState, Error, FastProblem, FastSolution, Load, LoadKind, Patch,
-    PatchPressure, Regime, Shape, Tolerance, TractionDirections,
+    ElementState, Error, FastProblem, FastSolution, Load, LoadKind, Regime, Tolerance,
+    TractionDirections,
 };
 
 /// Worst violation of the optimality conditions, each relative to its natural scale
@@ -25,7 +26,7 @@ fn optimality(
     moment: Option<f64>,
 ) -> f64 {
     let s = steel();
-    let c = stickslip_traction::influence::Compliance::pair(&s, &s);
+    let c = stickslip_lattice::influence::Compliance::pair(&s, &s);
     let op = TensorConvolution::new(grid, &c, Default::default()).unwrap();
     let n = grid.len();
     let qx: Vec<f64> = sol.traction.iter().map(|q| q.0).collect();

@@ -6,8 +6,9 @@
 //! with `NoStickLeft`, which is why the planner refuses such loads before solving.
 
 use stickslip_halfspace::Material;
-use stickslip_traction::fast::{FastProblem, TractionDirections};
-use stickslip_traction::{ContactGrid, Error, Load};
+use stickslip_lattice::ContactGrid;
+use stickslip_traction::{fast::FastProblem, fast::TractionDirections};
+use stickslip_traction::{Error, Load};
 
 fn setup(n: usize) -> (ContactGrid, Material, f64) {
     let (p, f) = (2160.0, 0.1);

@@ -3,8 +3,9 @@
 mod fast_common;
 use fast_common::{extended, steel, tol};
 use std::time::Instant;
+use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{ContactGrid, ElementState, FastProblem, FastSolution, Load};
+use stickslip_traction::{ElementState, FastProblem, FastSolution, Load};
 
 /// Hertz radius of a sphere R on a flat, a = (3PR/(4E*))^(1/3) (FORMULAS.md E).
 fn hertz_radius(p: f64, r: f64) -> f64 {

@@ -6,9 +6,12 @@
 //! closed form (FORMULAS.md E).
 
 use stickslip_halfspace::Material;
+use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::fast::{FastConfig, FastProblem, WarmStart, NEST_MIN_CELLS};
-use stickslip_traction::{ContactGrid, Error, Load, Tolerance};
+use stickslip_traction::{
+    fast::FastConfig, fast::FastProblem, fast::WarmStart, fast::NEST_MIN_CELLS,
+};
+use stickslip_traction::{Error, Load, Tolerance};
 
 const P: f64 = 2160.0;
 const F: f64 = 0.1;

@@ -5,10 +5,9 @@
 mod fast_common;
 use fast_common::{extended, steel, tol};
 use std::time::Instant;
+use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Lubkin;
-use stickslip_traction::{
-    ContactGrid, ElementState, FastProblem, Load, TractionDirections, TractionProblem,
-};
+use stickslip_traction::{ElementState, FastProblem, Load, TractionDirections, TractionProblem};
 
 /// Sphere (Example 1 proportions) on a grid `n_across` elements across the diameter.
 fn compare_force(n_across: usize, t: f64, angle: f64) {

@@ -21,9 +21,9 @@ use common::{steel, tol};
 use std::f64::consts::FRAC_PI_4;
 use std::time::Instant;
 use stickslip_halfspace::rectangle::Compliance;
-use stickslip_traction::influence::projected_matrix;
-use stickslip_traction::lp::{modified_lp, LpConfig};
-use stickslip_traction::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
+use stickslip_lattice::influence::projected_matrix;
+use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
+use stickslip_traction::{lp::modified_lp, lp::LpConfig};
 
 /// Solve the QP with clarabel on the scaled problem (forces by max capacity, influence by
 /// its largest diagonal entry) and return the forces and $\beta$ in the caller's units,

@@ -5,13 +5,11 @@ mod common;
 use common::{extended, hertz_radius, steel, tol};
 use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOutcome};
 use std::time::Instant;
+use stickslip_lattice::influence::projected_matrix;
+use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
 use stickslip_traction::closed::Lubkin;
-use stickslip_traction::influence::projected_matrix;
-use stickslip_traction::lp::{modified_lp, modified_lp_reference, LpConfig};
-use stickslip_traction::{
-    ContactGrid, ElementState, InfluenceModel, Load, Patch, PatchPressure, Regime, Shape,
-    TractionProblem, TractionSolution,
-};
+use stickslip_traction::{lp::modified_lp, lp::modified_lp_reference, lp::LpConfig};
+use stickslip_traction::{ElementState, Load, Regime, TractionProblem, TractionSolution};
 
 /// Optimality: 0 <= F <= fP, equality on slip elements, u = beta g on stick elements,
 /// u <= beta g on slip elements, g.F = load. Returns the worst relative residual.

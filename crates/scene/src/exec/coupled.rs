@@ -1,11 +1,12 @@
 //! Stages 1 and 2 together for dissimilar bodies on a surface: the normal and tangential
 //! problems coupled through Dundurs' beta, solved by the traction crate's alternating
-//! process ([`stickslip_traction::coupled`]). Used only when the plan says so
+//! process ([`stickslip_normal::coupled`]). Used only when the plan says so
 //! (`ContactRecipe::coupling`); with beta = 0 the separate stages run and this file is not
 //! involved.
 
-use stickslip_traction::coupled::CoupledProblem;
-use stickslip_traction::{ElementState, Load, NormalLoad as TNormalLoad, Tolerance};
+use stickslip_normal::CoupledProblem;
+use stickslip_normal::NormalLoad as TNormalLoad;
+use stickslip_traction::{ElementState, Load, Tolerance};
 
 use super::friction::TangentialOut;
 use super::lattice::Lattice;
@@ -51,14 +52,14 @@ pub(crate) fn solve(
         .with_origin((-0.5 * s.size[0], -0.5 * s.size[1]))
         .with_tolerance(tol)
         .with_boundary(match s.boundary {
-            crate::scene::SurfaceBoundary::Free => stickslip_traction::normal::Boundary::Free,
-            crate::scene::SurfaceBoundary::Periodic => {
-                stickslip_traction::normal::Boundary::Periodic
-            }
+            crate::scene::SurfaceBoundary::Free => stickslip_normal::solver::Boundary::Free,
+            crate::scene::SurfaceBoundary::Periodic => stickslip_normal::solver::Boundary::Periodic,
         })
         .solve(nload)
         .map_err(|e| match e {
-            stickslip_traction::Error::CapacityExceeded { .. } => solver_err(
+            stickslip_normal::Error::Tangential(stickslip_traction::Error::CapacityExceeded {
+                ..
+            }) => solver_err(
                 "coupled solve (the tangential load exceeds the friction capacity f P)",
                 e,
             ),

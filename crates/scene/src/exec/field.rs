@@ -9,9 +9,9 @@ use stickslip_halfspace::Stress2;
 use stickslip_halfspace::hertz::ellipse_field::HertzLoadField;
 use stickslip_halfspace::hertz::sphere_field::hertz_sphere_stress;
 use stickslip_halfspace::Stress3;
-use stickslip_traction::field::{
-    invariants, subsurface_field, Boundary as FieldBoundary, FieldConfig, Lattice as FieldLattice,
-    StressLayer, SurfaceTraction,
+use stickslip_lattice::{
+    field::invariants, field::subsurface_field, field::Boundary as FieldBoundary,
+    field::FieldConfig, field::Lattice as FieldLattice, field::StressLayer, field::SurfaceTraction,
 };
 
 use super::friction::LineTraction;
@@ -88,7 +88,7 @@ pub(crate) fn line(
 
 /// The stresses of a 3D contact on the box of `f`: the Hertz sphere's closed form, or the
 /// lattice's pressure and traction (on the substrate) by FFT per depth layer
-/// (`stickslip_traction::field`) on a lattice of the contact's cell size extended over the
+/// (`stickslip_lattice::field`) on a lattice of the contact's cell size extended over the
 /// box, interpolated bilinearly between cell centres to the box points.
 pub(crate) fn contact(
     f: &ContactField,

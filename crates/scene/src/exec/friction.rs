@@ -5,7 +5,7 @@
 use stickslip_graded::{Patch as GradedPatch, Profile, SurfaceLoad};
 use stickslip_halfspace::cattaneo2d::Cattaneo2d;
 use stickslip_halfspace::hertz::strip::Strip;
-use stickslip_traction::closed::{Cattaneo, Mindlin};
+use stickslip_traction::{closed::Cattaneo, closed::Mindlin};
 
 use super::lattice::Lattice;
 use super::normal::{ContactSolution, LineContact};

@@ -2,9 +2,11 @@
 //! crate's grid-solver contract ([`GridSolver`]): the modified LP (one load mode) or the fast
 //! FFT solver (a force, a moment, or both). Failures arrive as typed errors.
 
+use stickslip_lattice::PeriodicLattice;
+
 use stickslip_traction::{
     Error as TractionError, FastSolver, GridProblem, GridSolver, Load, LoadKind, ModifiedLp,
-    PeriodicLattice, Tolerance,
+    Tolerance,
 };
 
 use super::friction::TangentialOut;

@@ -1,7 +1,7 @@
 //! The lattice of a 3D result: element-centre coordinates and the per-cell pressure,
 //! traction and stick flag that result.json and the CSV files carry.
 
-use stickslip_traction::{Patch as GridPatch, PatchPressure, Shape};
+use stickslip_lattice::{Patch as GridPatch, PatchPressure, Shape};
 
 use super::outcome::SurfaceOut;
 use crate::scene::{Patch, PatchShape};

@@ -6,9 +6,9 @@ use std::f64::consts::PI;
 use stickslip_graded::{GradedMaterial, RigidCylinder};
 use stickslip_halfspace::hertz::{HertzEllipse, HertzLine, HertzSphere};
 use stickslip_halfspace::material::composite_modulus;
-use stickslip_traction::{
-    Boundary, ContactGrid, NormalLoad as TNormalLoad, NormalOperator, NormalProblem, Tolerance,
-};
+use stickslip_lattice::ContactGrid;
+use stickslip_normal::{Boundary, NormalLoad as TNormalLoad, NormalProblem};
+use stickslip_traction::Tolerance;
 
 use super::lattice::{self, Lattice};
 use super::outcome::LoadCurve;
@@ -238,7 +238,7 @@ fn surface_contact(
         }
         _ => vec![last],
     };
-    let op = NormalOperator::new(&problem);
+    let op = problem.operator();
     let mut curve = sweep.map(|_| LoadCurve {
         normal: Vec::new(),
         approach: Vec::new(),
@@ -289,7 +289,7 @@ pub(crate) fn surface_gap(s: &crate::scene::Surface) -> Vec<f64> {
 /// the solver note, the contact grid and the lattice.
 pub(crate) fn surface_solution(
     s: &crate::scene::Surface,
-    sol: &stickslip_traction::NormalSolution,
+    sol: &stickslip_normal::NormalSolution,
     tolerance: f64,
     curve: Option<LoadCurve>,
     cx: &mut Ctx<'_>,
@@ -351,8 +351,8 @@ pub(crate) fn surface_solution(
 }
 
 /// A normal-solver error as a scene error, by its variant.
-pub(crate) fn surface_err(e: stickslip_traction::Error) -> SceneError {
-    use stickslip_traction::Error as E;
+pub(crate) fn surface_err(e: stickslip_normal::Error) -> SceneError {
+    use stickslip_normal::Error as E;
     match &e {
         E::UnresolvedContact { minimum, .. } => SceneError::new(
             ErrorKind::Solver,

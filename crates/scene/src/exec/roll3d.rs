@@ -1,13 +1,16 @@
 //! Stage 2 of a 3D contact in steady rolling: creep forces, spin moment, traction, stick and
 //! slip and micro-slip from the creepages, by the exact theory, FASTSIM or Polach's law
-//! (`stickslip_traction::rolling`), on the normal stage's contact grid.
+//! (`stickslip_rolling::steady3d`), on the normal stage's contact grid.
 //!
 //! The rolling theories give the traction on body 1 (the indenter, Kalker's convention) and
 //! the creep forces on it; the lattice carries, as for every 3D contact, the traction on the
 //! substrate, its negative, which the subsurface field stage loads the substrate with.
 
-use stickslip_traction::rolling::{fastsim, polach, RollingMethod, RollingSolution, SteadyRolling};
-use stickslip_traction::Error as TractionError;
+use stickslip_rolling::Error as RollingError;
+use stickslip_rolling::{
+    steady3d::fastsim, steady3d::polach, steady3d::RollingMethod, steady3d::RollingSolution,
+    steady3d::SteadyRolling,
+};
 
 use super::friction::TangentialOut;
 use super::lattice::Lattice;
@@ -126,9 +129,9 @@ pub(crate) fn solve(
 
 /// FASTSIM's and Polach's parameters come from Kalker's table: a contact outside it is
 /// refused with the method key.
-fn method_err(e: TractionError) -> SceneError {
+fn method_err(e: RollingError) -> SceneError {
     match e {
-        TractionError::OutOfDomain { .. } => SceneError::new(
+        RollingError::OutOfDomain { .. } => SceneError::new(
             ErrorKind::Unsupported,
             format!("the approximate rolling theory cannot take this contact: {e}"),
         )
@@ -138,9 +141,9 @@ fn method_err(e: TractionError) -> SceneError {
     }
 }
 
-fn exact_err(e: TractionError) -> SceneError {
+fn exact_err(e: RollingError) -> SceneError {
     match e {
-        TractionError::NotConverged { .. } => {
+        RollingError::NotConverged { .. } => {
             SceneError::new(ErrorKind::Solver, format!("exact steady rolling: {e}"))
                 .key("solver.tolerance")
                 .hint("raise solver.tolerance (e.g. 1e-6) or change solver.grid")

@@ -8,8 +8,9 @@ use stickslip_graded::{Accuracy, GradedMaterial};
 use stickslip_halfspace::hertz::HertzSphere;
 use stickslip_halfspace::material::{composite_modulus, dundurs_beta};
 use stickslip_halfspace::Material;
+use stickslip_normal::NormalProblem;
 use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
-use stickslip_traction::{FastConfig, ModifiedLp, NormalProblem};
+use stickslip_traction::{FastConfig, ModifiedLp};
 
 use super::checks::{self, invalid, tolerance_for};
 use super::cost::{self, lattice_elements};
@@ -354,7 +355,9 @@ fn rolling_step(
     speed: f64,
     creepage: Creepage,
 ) -> Result<Tangential, Issue> {
-    use stickslip_traction::rolling::{FASTSIM_FORCE_ERROR, POLACH_FORCE_ERROR, TOLERANCE_RANGE};
+    use stickslip_rolling::{
+        steady3d::FASTSIM_FORCE_ERROR, steady3d::POLACH_FORCE_ERROR, steady3d::TOLERANCE_RANGE,
+    };
     let l = &scene.load;
     if l.friction <= 0.0 {
         return Err(checks::unsupported(

@@ -70,7 +70,7 @@ pub(crate) fn lattice(scene: &Scene) -> Result<(), Issue> {
     let error = |n: usize| -> Option<f64> {
         let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
         let grid =
-            stickslip_traction::ContactGrid::from_patches(h, h, (lo[0], lo[1]), &patches).ok()?;
+            stickslip_lattice::ContactGrid::from_patches(h, h, (lo[0], lo[1]), &patches).ok()?;
         Some((grid.total_normal_force() - force).abs() / force)
     };
     let n = scene.solver.grid;
@@ -114,7 +114,7 @@ pub(crate) fn lattice(scene: &Scene) -> Result<(), Issue> {
 /// the centre of pressure on the lattice (`ContactGrid::spin_capacity`, an upper bound of
 /// the torsional capacity): above it the contact spins and no solver can carry the moment.
 pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
-    use stickslip_traction::ContactGrid;
+    use stickslip_lattice::ContactGrid;
     let l = &scene.load;
     if l.moment == 0.0 || l.friction <= 0.0 {
         return Ok(());

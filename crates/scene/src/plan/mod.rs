@@ -120,7 +120,7 @@ pub enum Technique {
     /// Uniform pressure on each patch as given.
     PatchPressure,
     /// Normal contact of any surface on a lattice by constrained conjugate gradients
-    /// (Polonsky & Keer 1999): `stickslip_traction::NormalProblem`.
+    /// (Polonsky & Keer 1999): `stickslip_normal::NormalProblem`.
     SurfaceContact,
     /// Full sliding, $q = f p$.
     Sliding,
@@ -170,14 +170,14 @@ pub enum Technique {
     /// `stickslip_halfspace::hertz::ellipse_field`.
     HertzEllipseField,
     /// Subsurface stresses of a lattice traction by FFT per depth layer with the exact
-    /// uniform-rectangle stresses (FORMULAS.md F): `stickslip_traction::field`.
+    /// uniform-rectangle stresses (FORMULAS.md F): `stickslip_lattice::field`.
     LatticeField,
     /// Exact 3D steady rolling with creepage and spin (Kalker's boundary-element theory, FFT
-    /// products, semismooth Newton): `stickslip_traction::rolling::SteadyRolling`.
+    /// products, semismooth Newton): `stickslip_rolling::steady3d::SteadyRolling`.
     SteadyRolling,
-    /// Kalker's simplified theory: `stickslip_traction::rolling::fastsim`.
+    /// Kalker's simplified theory: `stickslip_rolling::steady3d::fastsim`.
     Fastsim,
-    /// Polach's creep-force law: `stickslip_traction::rolling::polach`.
+    /// Polach's creep-force law: `stickslip_rolling::steady3d::polach`.
     Polach,
 }
 

@@ -10,8 +10,8 @@
 
 use stickslip_graded::{Accuracy, GradedMaterial};
 use stickslip_halfspace::Material;
+pub use stickslip_rolling::{steady3d::Creepage, steady3d::RollingMethod};
 use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
-pub use stickslip_traction::rolling::{Creepage, RollingMethod};
 
 use crate::scene::{FieldGrid, Patch};
 

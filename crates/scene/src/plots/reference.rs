@@ -15,7 +15,7 @@
 use stickslip_halfspace::cattaneo2d::Cattaneo2d;
 use stickslip_halfspace::hertz::{HertzEllipse, HertzLine, HertzSphere};
 use stickslip_halfspace::material::composite_modulus;
-use stickslip_traction::closed::{Cattaneo, Deresiewicz, Mindlin};
+use stickslip_traction::{closed::Cattaneo, closed::Deresiewicz, closed::Mindlin};
 
 use crate::exec::outcome::Outcome;
 use crate::plan::recipe::{

@@ -1,7 +1,7 @@
 //! A fast partial-slip solver for large grids: both traction components free on the Coulomb
 //! disc $|\mathbf q_k| \le f p_k$, a tangential force in any direction and optionally a
 //! twisting moment, the influence operator applied by zero-padded FFT convolution
-//! ([`TensorConvolution`]).
+//! ([`stickslip_lattice::TensorConvolution`]).
 //!
 //! # The discrete problem
 //!
@@ -78,11 +78,8 @@
 //! references of the tests.
 
 mod newton;
-mod operator;
 mod solver;
 
-pub(crate) use operator::{fast_size, signed};
-pub use operator::{ConvScratch, PeriodicLattice, TensorConvolution};
 pub(crate) use solver::{resultant_moment, SOLVER_NAME};
 pub use solver::{
     FastConfig, FastInfo, FastProblem, FastSolution, TractionDirections, WarmStart, NEST_MIN_CELLS,

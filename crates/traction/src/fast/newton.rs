@@ -2,7 +2,6 @@
 //! ([`FastProblem::solve_with`] runs it; the method is described in the module
 //! documentation of [`crate::fast`]).
 
-use super::operator::{ConvScratch, TensorConvolution};
 use super::solver::{
     resultant_moment, FastInfo, FastProblem, FastSolution, TractionDirections, WarmStart,
     SOLVER_NAME,
@@ -11,6 +10,7 @@ use crate::contract::LoadKind;
 use crate::error::{Error, Result};
 use crate::solve::{ElementState, Regime};
 use std::time::Instant;
+use stickslip_lattice::{ConvScratch, TensorConvolution};
 
 mod pcg;
 

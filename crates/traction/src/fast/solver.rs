@@ -2,14 +2,14 @@
 //! documentation of [`crate::fast`]); the iteration itself is in `newton.rs`.
 
 use super::newton::Solver;
-use super::operator::{ConvScratch, PeriodicLattice, TensorConvolution};
 use crate::contract::{check_pair, Load};
 use crate::error::{tolerance_in, Error, Result};
-use crate::grid::ContactGrid;
-use crate::influence::{Compliance, InfluenceModel};
 use crate::solve::{ElementState, Regime};
 use std::time::Instant;
 use stickslip_halfspace::Material;
+use stickslip_lattice::influence::{Compliance, InfluenceModel};
+use stickslip_lattice::ContactGrid;
+use stickslip_lattice::{ConvScratch, PeriodicLattice, TensorConvolution};
 use stickslip_quad::Tolerance;
 
 /// The fast solver's name, as in its errors.
@@ -268,7 +268,7 @@ impl<'a> FastProblem<'a> {
     /// element) to the elastic one: the slip becomes
     /// $\mathbf s_k = \mathbf w_k - (K*\mathbf q)_k - \mathbf u^0_k$. This is how the normal
     /// pressure enters the tangential problem of dissimilar bodies (Dundurs coupling,
-    /// [`crate::coupled`]): $\mathbf u^0 = K_{tn}\,p$. With it a zero load is no longer
+    /// `stickslip-normal`'s Dundurs coupling): $\mathbf u^0 = K_{tn}\,p$. With it a zero load is no longer
     /// trivial (the pressure alone drives a self-equilibrated traction).
     ///
     /// # Errors
@@ -397,10 +397,10 @@ impl<'a> FastProblem<'a> {
     /// # Errors
     /// As [`TensorConvolution::new`].
     pub fn operator(&self) -> Result<TensorConvolution> {
-        match &self.periodic {
-            Some(lattice) => TensorConvolution::periodic(self.grid, &self.compliance(), lattice),
-            None => TensorConvolution::new(self.grid, &self.compliance(), self.model),
-        }
+        Ok(match &self.periodic {
+            Some(lattice) => TensorConvolution::periodic(self.grid, &self.compliance(), lattice)?,
+            None => TensorConvolution::new(self.grid, &self.compliance(), self.model)?,
+        })
     }
 
     /// Plan the operator and solve the discrete problem of the [`crate::fast`] module docs

@@ -19,11 +19,12 @@ use stickslip_halfspace::hertz::HertzSphere;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::rectangle::shear_self_term;
 use stickslip_halfspace::Material;
+use stickslip_lattice::{ContactGrid, InfluenceModel};
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 use stickslip_rolling::contact_length;
 use stickslip_special::{bessel_i0e, bessel_i1e, bessel_k0e, bessel_k1e, gamma};
-use stickslip_traction::closed::{Deresiewicz, Mindlin};
-use stickslip_traction::{ContactGrid, InfluenceModel, Load, TractionProblem};
+use stickslip_traction::{closed::Deresiewicz, closed::Mindlin};
+use stickslip_traction::{Load, TractionProblem};
 use stickslip_verification::published::{seed000 as pub000, seed002 as pub002};
 use stickslip_verification::{as_published, Published};
 

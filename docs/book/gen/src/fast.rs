@@ -20,12 +20,12 @@ use crate::mindlin::{example1, example1_inputs};
 use crate::{check, tol, Context, Error};
 use std::f64::consts::PI;
 use stickslip_halfspace::Material;
+use stickslip_lattice::TensorConvolution;
+use stickslip_lattice::{influence::tensor_matrix, influence::Compliance};
+use stickslip_lattice::{ContactGrid, InfluenceModel};
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::fast::TensorConvolution;
-use stickslip_traction::influence::{tensor_matrix, Compliance};
 use stickslip_traction::{
-    ContactGrid, ElementState, FastConfig, FastProblem, FastSolution, InfluenceModel, Load,
-    TractionDirections, TractionProblem,
+    ElementState, FastConfig, FastProblem, FastSolution, Load, TractionDirections, TractionProblem,
 };
 
 const PAGE: &str = "fast.md";

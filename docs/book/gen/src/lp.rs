@@ -4,9 +4,8 @@
 use crate::fmt::{num, pct, resid, Table};
 use crate::mindlin::example1;
 use crate::{check, tol, Context, Error};
-use stickslip_traction::{
-    ContactGrid, ElementState, InfluenceModel, Load, Regime, TractionProblem,
-};
+use stickslip_lattice::{ContactGrid, InfluenceModel};
+use stickslip_traction::{ElementState, Load, Regime, TractionProblem};
 use stickslip_verification::published::seed002 as pub002;
 
 const PAGE: &str = "lp.md";

@@ -9,7 +9,9 @@ use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 use stickslip_special::{ellipe, ellipk};
-use stickslip_traction::closed::{cattaneo_lambda, Deresiewicz, LoadAxis, Lubkin, Mindlin};
+use stickslip_traction::{
+    closed::cattaneo_lambda, closed::Deresiewicz, closed::LoadAxis, closed::Lubkin, closed::Mindlin,
+};
 use stickslip_verification::published::seed002 as pub002;
 
 const PAGE: &str = "mindlin.md";

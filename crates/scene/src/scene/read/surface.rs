@@ -238,7 +238,7 @@ pub(super) fn surface(
     Ok(Surface { boundary, size, cells, profile, roughness })
 }
 
-/// Generated roughness: a self-affine random surface (traction::roughness) of the lattice.
+/// Generated roughness: a self-affine random surface (lattice::roughness) of the lattice.
 fn generated(
     cx: &Reader<'_>,
     rr: &crate::raw::RawRoughness,
@@ -246,7 +246,7 @@ fn generated(
     cells: [usize; 2],
     size: [f64; 2],
 ) -> Result<Vec<f64>, SceneError> {
-    use stickslip_traction::roughness::{Rms, SelfAffine};
+    use stickslip_lattice::{roughness::Rms, roughness::SelfAffine};
     let hurst = cx.num(
         cx.required(
             &rr.hurst,
@@ -295,7 +295,7 @@ fn generated(
     let spec = SelfAffine { hurst, k_low, k_rolloff, k_high, rms, seed };
     spec.heights(cells[0], cells[1], size).map_err(|e| {
         let key = match &e {
-            stickslip_traction::Error::OutOfDomain { name, .. } => match *name {
+            stickslip_lattice::Error::OutOfDomain { name, .. } => match *name {
                 "hurst" => "geometry.roughness.hurst",
                 "k_low" => "geometry.roughness.k_low",
                 "k_high" => "geometry.roughness.k_high",

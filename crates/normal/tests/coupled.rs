@@ -9,9 +9,10 @@ use stickslip_halfspace::rectangle::{
     pressure_displacement, pressure_uz, shear_x_displacement, shear_y_displacement, Rect,
 };
 use stickslip_halfspace::Material;
+use stickslip_normal::CoupledProblem;
+use stickslip_normal::NormalLoad;
 use stickslip_traction::contract::Load;
-use stickslip_traction::coupled::CoupledProblem;
-use stickslip_traction::{NormalLoad, Tolerance};
+use stickslip_traction::Tolerance;
 
 const N: usize = 12;
 const H: f64 = 1e-5;
@@ -328,13 +329,13 @@ fn bonded_flat_punch_is_stiffer_by_mossakovskiis_factor() {
     let beta = dundurs_beta(&bodies[0], &bodies[1]);
     let delta = 1e-7;
     let tol = Tolerance::relative(1e-10).unwrap();
-    let plain = stickslip_traction::NormalProblem::new(
+    let plain = stickslip_normal::NormalProblem::new(
         n,
         n,
         (h, h),
         &g0,
         bodies,
-        stickslip_traction::Boundary::Free,
+        stickslip_normal::Boundary::Free,
     )
     .unwrap()
     .with_tolerance(tol)

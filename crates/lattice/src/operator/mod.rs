@@ -23,6 +23,12 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::{Fft, FftPlanner};
 use std::sync::Arc;
 
+mod cross;
+mod normal;
+
+pub use cross::CrossOperator;
+pub use normal::{NormalOperator, NormalScratch};
+
 type C64 = Complex<f64>;
 
 /// Columns (forward) or rows (inverse) handled together by one task of the 2D FFTs: the
@@ -30,7 +36,7 @@ type C64 = Complex<f64>;
 const BLOCK: usize = 16;
 
 /// Smallest even 5-smooth integer $\ge n$ (fast FFT sizes for rustfft/realfft).
-pub(crate) fn fast_size(n: usize) -> usize {
+pub fn fast_size(n: usize) -> usize {
     let mut m = n.max(2);
     loop {
         if m % 2 == 0 {
@@ -557,7 +563,7 @@ impl TensorConvolution {
     /// bounding box (5-smooth size, no padding), with the discrete wave number
     /// $2\sin(kh/2)/h$ per axis; the mean mode gets the smallest non-zero wave number, and
     /// the whole is scaled so that its diagonal equals $1/K_{xx}(0)$ (the Jacobi value).
-    pub(crate) fn inverse_symbol(grid: &ContactGrid, c: &Compliance, k0xx: f64) -> Result<Self> {
+    pub fn inverse_symbol(grid: &ContactGrid, c: &Compliance, k0xx: f64) -> Result<Self> {
         let (nx, ny, _, _, cell) = grid.lattice_cells()?;
         let (mx, my) = (fast_size(nx), fast_size(ny));
         let mut op = Self::on_cells(nx, ny, mx, my, cell);
@@ -624,7 +630,7 @@ impl TensorConvolution {
 }
 
 /// FFT index `i` of a length-`m` transform as a signed frequency (`i - m` above `m / 2`).
-pub(crate) fn signed(i: usize, m: usize) -> f64 {
+pub fn signed(i: usize, m: usize) -> f64 {
     if 2 * i <= m {
         i as f64
     } else {
@@ -652,7 +658,7 @@ fn rows_of(cell: &[usize], nx: usize, ny: usize) -> (Vec<(usize, usize)>, Vec<us
     (items, ptr)
 }
 
-/// The scalar (normal) operator on a full $n_x\times n_y$ lattice, for [`crate::normal`]:
+/// The scalar (normal) operator on a full $n_x\times n_y$ lattice, for [`NormalOperator`]:
 /// the same planned row/column FFTs as the tangential tensor, one real kernel spectrum
 /// (stored in `kxx`; `kxy`, `kyy` empty), arrays row-major `[j * nx + i]`.
 impl TensorConvolution {
@@ -683,11 +689,7 @@ impl TensorConvolution {
     /// Aperiodic (zero-padded, $M \ge 2n-1$ per axis) scalar convolution with the even kernel
     /// `kernel(di, dj)` $= K(|\Delta i|, |\Delta j|)$, evaluated for $0\le d_i<n_x$,
     /// $0\le d_j<n_y$.
-    pub(crate) fn scalar_free(
-        nx: usize,
-        ny: usize,
-        kernel: impl Fn(usize, usize) -> f64 + Sync,
-    ) -> Self {
+    pub fn scalar_free(nx: usize, ny: usize, kernel: impl Fn(usize, usize) -> f64 + Sync) -> Self {
         let mut op = Self::scalar_plan(nx, ny, fast_size(2 * nx - 1), fast_size(2 * ny - 1));
         let (mx, my, mxh) = (op.mx, op.my, op.mxh);
         let quad: Vec<f64> = (0..ny)
@@ -723,7 +725,7 @@ impl TensorConvolution {
     /// Periodic scalar convolution on the $n_x\times n_y$ torus (no padding) with the transfer
     /// function `transfer(kx, ky)` (displacement Fourier coefficient per pressure Fourier
     /// coefficient at the wave vector $(k_x, k_y)$, rad/m); `(lx, ly)` the periods.
-    pub(crate) fn scalar_periodic(
+    pub fn scalar_periodic(
         nx: usize,
         ny: usize,
         (lx, ly): (f64, f64),
@@ -745,7 +747,7 @@ impl TensorConvolution {
 
     /// Work space of [`TensorConvolution::apply_scalar`] (two complex arrays, about
     /// $3M_xM_y/2$ complex numbers).
-    pub(crate) fn make_scalar_scratch(&self) -> ConvScratch {
+    pub fn make_scalar_scratch(&self) -> ConvScratch {
         let z = C64::new(0.0, 0.0);
         ConvScratch {
             lat: [Vec::new(), Vec::new()],
@@ -756,7 +758,7 @@ impl TensorConvolution {
 
     /// $u = K * q$ for the scalar kernel of [`TensorConvolution::scalar_free`] or
     /// [`TensorConvolution::scalar_periodic`]; `q`, `u` row-major $n_x\times n_y$.
-    pub(crate) fn apply_scalar(&self, q: &[f64], u: &mut [f64], s: &mut ConvScratch) {
+    pub fn apply_scalar(&self, q: &[f64], u: &mut [f64], s: &mut ConvScratch) {
         assert!(q.len() == self.n && u.len() == self.n, "lattice length");
         let nx = self.nx;
         let [rowspec, _] = &mut s.rowspec;

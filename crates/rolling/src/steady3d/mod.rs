@@ -144,7 +144,7 @@ pub(crate) struct Rows {
 
 impl Rows {
     /// The rows of `grid` (one lattice, no shared cells: `ContactGrid::lattice_cells`).
-    pub(crate) fn of(grid: &crate::ContactGrid) -> crate::Result<Self> {
+    pub(crate) fn of(grid: &stickslip_lattice::ContactGrid) -> crate::Result<Self> {
         let (nx, _, x0, _, cells) = grid.lattice_cells()?;
         let cell: Vec<(usize, usize)> = cells.iter().map(|&c| (c % nx, c / nx)).collect();
         let index: std::collections::HashMap<(usize, usize), usize> =
@@ -159,7 +159,7 @@ impl Rows {
 impl RollingSolution {
     /// The solution on `grid`'s elements, with the resultants summed from the tractions.
     pub(crate) fn on_grid(
-        grid: &crate::ContactGrid,
+        grid: &stickslip_lattice::ContactGrid,
         q: [Vec<f64>; 2],
         s: [Vec<f64>; 2],
         stick: Vec<bool>,

@@ -7,11 +7,9 @@ use stickslip_halfspace::hertz::HertzEllipse;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::rectangle::{pressure_uz, Compliance, Rect};
 use stickslip_halfspace::Material;
+use stickslip_normal::{Boundary, Error, NormalLoad, NormalProblem, NormalSolution};
 use stickslip_traction::closed::Mindlin;
-use stickslip_traction::{
-    Boundary, ElementState, Error, FastProblem, Load, NormalLoad, NormalOperator, NormalProblem,
-    NormalSolution, Tolerance,
-};
+use stickslip_traction::{ElementState, FastProblem, Load, Tolerance};
 
 /// Tolerances, each with its reason.
 mod tol {
@@ -423,7 +421,7 @@ fn against_dense_direct_solve() {
     let pb = NormalProblem::new(nx, ny, (h, h), &g0, [m, rigid], Boundary::Periodic)
         .unwrap()
         .with_tolerance(tight());
-    let op = NormalOperator::new(&pb);
+    let op = pb.operator();
     let mut scratch = op.make_scratch();
     let mut kp = vec![0.0; n * n];
     let (mut e_j, mut col) = (vec![0.0; n], vec![0.0; n]);
@@ -457,7 +455,7 @@ fn force_and_displacement_control_agree() {
     let pb = NormalProblem::new(side, side, (h, h), &g0, [m, m], Boundary::Free)
         .unwrap()
         .with_tolerance(tight());
-    let op = NormalOperator::new(&pb);
+    let op = pb.operator();
     let f = pb.solve_with(&op, NormalLoad::Force(0.5), None).unwrap();
     let d = pb.solve_with(&op, NormalLoad::Approach(f.approach), None).unwrap();
     let e = f.pressure.iter().zip(&d.pressure).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)

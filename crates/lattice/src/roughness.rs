@@ -1,5 +1,5 @@
 //! Self-affine random rough surfaces on a lattice by Fourier synthesis, for the
-//! normal-contact solver ([`crate::normal`]).
+//! normal-contact solver (`stickslip-normal`).
 //!
 //! The heights are the real inverse discrete Fourier transform of a spectrum with random
 //! phases and amplitudes $\sqrt{C(k)}$ from the isotropic power spectrum

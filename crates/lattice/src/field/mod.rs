@@ -28,7 +28,7 @@
 //! - [`Boundary::Free`]: the half-space is not periodic. The kernel is laid out for offsets
 //!   $-(n-1)\dots n-1$ on a circular array of size $M \ge 2n-1$ per axis and the tractions are
 //!   zero-padded, so the circular convolution equals the linear one (Liu, Wang & Liu 2000,
-//!   *Wear* 243, "DC-FFT"; as in [`crate::fast`]).
+//!   *Wear* 243, "DC-FFT"; as in [`crate::operator`]).
 //! - [`Boundary::Periodic`]: the tractions repeat with period $(n_xh_x, n_yh_y)$. The kernel
 //!   spectrum is the Fourier transfer of the half-space (Love's potential
 //!   $\hat\Phi = 2\pi e^{-\kappa z}/\kappa^3$, $\kappa = |\mathbf k|$, times the transforms of
@@ -62,6 +62,7 @@ pub use result::{invariants, Extremum, FieldMaxima, Invariants, StressField, Str
 
 use crate::error::{Error, Result};
 use crate::grid::ContactGrid;
+pub use crate::Boundary;
 use stickslip_halfspace::rect_stress::{rect_stress, Traction};
 use stickslip_halfspace::rectangle::Rect;
 use stickslip_halfspace::Stress3;
@@ -198,17 +199,6 @@ impl SurfaceTraction<'_> {
         }
         Ok(())
     }
-}
-
-/// Boundary condition of the lattice in the surface plane.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Boundary {
-    /// The loaded lattice is all there is; the half-space beyond it is traction free
-    /// (zero-padded, aperiodic convolution).
-    #[default]
-    Free,
-    /// The traction repeats with the lattice's period in $x$ and $y$.
-    Periodic,
 }
 
 /// Options of [`subsurface_field`].

@@ -21,7 +21,7 @@
 //! exact uniform-rectangle formula ([`stickslip_halfspace::rectangle::pressure_uz`],
 //! FORMULAS.md F) with the two-body constant $c_1 = \sum_i (1-\nu_i)/G_i = 2/E^*$ — the same
 //! rectangles as the tangential solvers. The product is the zero-padded (aperiodic) FFT
-//! convolution of [`crate::fast::TensorConvolution`] (DC-FFT, no periodic images).
+//! convolution of [`stickslip_lattice::TensorConvolution`] (DC-FFT, no periodic images).
 //! [`Boundary::Periodic`]: the lattice is one period ($L_x = n_xh_x$, $L_y = n_yh_y$) of a
 //! periodic surface. Its kernel is the Fourier transfer of the half-space,
 //! $\hat u(\mathbf q) = \frac{2}{E^*|\mathbf q|}\hat p(\mathbf q)$ at the lattice wave vectors
@@ -88,12 +88,12 @@
 //! [`ContactGrid`] for the tangential solvers (partial slip on the computed contact).
 
 use crate::error::{positive, tolerance_in, Error, Result};
-use crate::fast::{ConvScratch, TensorConvolution};
-use crate::grid::ContactGrid;
 use rayon::prelude::*;
 use std::time::Instant;
-use stickslip_halfspace::rectangle::{pressure_uz, Compliance, Rect};
+use stickslip_halfspace::rectangle::Compliance;
 use stickslip_halfspace::Material;
+use stickslip_lattice::ContactGrid;
+pub use stickslip_lattice::{Boundary, NormalOperator, NormalScratch};
 use stickslip_quad::Tolerance;
 
 /// The solver's name (as in [`Error::NotConverged`]).
@@ -112,16 +112,6 @@ const REFRESH: usize = 50;
 
 /// Default iteration budget.
 pub const DEFAULT_MAX_ITERATIONS: usize = 10_000;
-
-/// Lateral boundary of the lattice.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Boundary {
-    /// An isolated contact on the half-space: zero-padded FFT, no periodic images.
-    #[default]
-    Free,
-    /// The lattice is one period of a periodic surface (Fourier transfer $2/(E^*|q|)$).
-    Periodic,
-}
 
 /// The normal load.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -219,13 +209,13 @@ pub struct NormalSolution {
 
 impl NormalSolution {
     /// The contact cells with their pressure as a [`ContactGrid`] (element centres on the
-    /// lattice, one patch) for the tangential solvers ([`crate::GridProblem`],
-    /// [`crate::FastProblem`]).
+    /// lattice, one patch) for the tangential solvers ([`stickslip_traction::GridProblem`],
+    /// [`stickslip_traction::FastProblem`]).
     ///
     /// # Errors
-    /// [`Error::EmptyGrid`] when there is no contact.
+    /// [`Error::Lattice`] (an empty grid) when there is no contact.
     pub fn contact_grid(&self) -> Result<ContactGrid> {
-        ContactGrid::from_mask(
+        Ok(ContactGrid::from_mask(
             self.hx,
             self.hy,
             self.origin,
@@ -233,7 +223,7 @@ impl NormalSolution {
             self.ny,
             &self.contact,
             &self.pressure,
-        )
+        )?)
     }
 
     /// Centre of cell `k` (m).
@@ -244,140 +234,19 @@ impl NormalSolution {
     }
 }
 
-/// The planned influence operator of a lattice (reusable across loads).
-#[derive(Debug)]
-pub struct NormalOperator {
-    conv: TensorConvolution,
-    nx: usize,
-    ny: usize,
-    /// Self-influence $K_{kk}$ (m/Pa).
-    self_term: f64,
-    /// $K e_0$: the displacement due to unit pressure on cell 0, row-major (free: $K$ at
-    /// offsets $(|d_i|, |d_j|)$; periodic: at offsets modulo the period).
-    column: Vec<f64>,
-    periodic: bool,
-    /// What it was planned for: cell sides and $c_1$ of the two bodies.
-    planned: (f64, f64, f64),
-    setup_seconds: f64,
-}
-
-impl NormalOperator {
-    /// Plan the operator of `problem`'s lattice, boundary and bodies.
-    #[must_use]
-    pub fn new(problem: &NormalProblem<'_>) -> Self {
-        let t0 = Instant::now();
-        let (nx, ny, hx, hy) = (problem.nx, problem.ny, problem.hx, problem.hy);
-        let c = Compliance::pair(&problem.bodies[0], &problem.bodies[1]);
-        let (conv, self_term) = match problem.boundary {
-            Boundary::Free => {
-                let cell = Rect { x1: -0.5 * hx, x2: 0.5 * hx, y1: -0.5 * hy, y2: 0.5 * hy };
-                let conv = TensorConvolution::scalar_free(nx, ny, |di, dj| {
-                    pressure_uz(&c, &cell, di as f64 * hx, dj as f64 * hy)
-                });
-                let s = conv.self_term()[0];
-                (conv, s)
-            }
-            Boundary::Periodic => {
-                // u(q) = c1/|q| p(q), c1 = sum (1-nu)/G = 2/E*.
-                let c1 = c.one_minus_nu;
-                let conv = TensorConvolution::scalar_periodic(
-                    nx,
-                    ny,
-                    (nx as f64 * hx, ny as f64 * hy),
-                    |kx, ky| {
-                        let q = kx.hypot(ky);
-                        if q > 0.0 {
-                            c1 / q
-                        } else {
-                            0.0
-                        }
-                    },
-                );
-                (conv, 0.0)
-            }
-        };
-        let mut column = vec![0.0; nx * ny];
-        let mut unit = vec![0.0; nx * ny];
-        unit[0] = 1.0;
-        conv.apply_scalar(&unit, &mut column, &mut conv.make_scalar_scratch());
-        // Periodic: the self-term is the kernel's own (free: the exact rectangle value).
-        let self_term = if problem.boundary == Boundary::Periodic { column[0] } else { self_term };
-        Self {
-            conv,
-            nx,
-            ny,
-            self_term,
-            column,
-            periodic: problem.boundary == Boundary::Periodic,
-            planned: (hx, hy, c.one_minus_nu),
-            setup_seconds: t0.elapsed().as_secs_f64(),
-        }
-    }
-
-    /// $u \mathrel{+}= \sum_c d_c K e_c$ for a few `(cell, value)` pairs, directly.
-    fn add_columns(&self, changes: &[(usize, f64)], u: &mut [f64]) {
-        if changes.is_empty() {
-            return;
-        }
-        let (nx, ny) = (self.nx, self.ny);
-        u.par_chunks_mut(nx).enumerate().for_each(|(j, row)| {
-            for &(c, d) in changes {
-                let (ic, jc) = (c % nx, c / nx);
-                let dj = if self.periodic { (j + ny - jc) % ny } else { j.abs_diff(jc) };
-                let col = &self.column[dj * nx..(dj + 1) * nx];
-                let (left, right) = row.split_at_mut(ic);
-                for (v, k) in right.iter_mut().zip(col) {
-                    *v += d * k;
-                }
-                if self.periodic {
-                    for (v, k) in left.iter_mut().zip(&col[nx - ic..]) {
-                        *v += d * k;
-                    }
-                } else {
-                    for (v, k) in left.iter_mut().rev().zip(&col[1..]) {
-                        *v += d * k;
-                    }
-                }
-            }
-        });
-    }
-
-    /// $u = Kp$ on the lattice (row-major, length $n_xn_y$).
-    ///
-    /// # Panics
-    /// If a length differs from $n_xn_y$.
-    pub fn apply(&self, p: &[f64], u: &mut [f64], scratch: &mut NormalScratch) {
-        self.conv.apply_scalar(p, u, &mut scratch.0);
-    }
-
-    /// Work space for [`NormalOperator::apply`].
-    #[must_use]
-    pub fn make_scratch(&self) -> NormalScratch {
-        NormalScratch(self.conv.make_scalar_scratch())
-    }
-
-    /// FFT size $(M_x, M_y)$.
-    #[must_use]
-    pub fn fft_size(&self) -> (usize, usize) {
-        self.conv.fft_size()
-    }
-
-    /// Lattice $(n_x, n_y)$.
-    #[must_use]
-    pub fn lattice(&self) -> (usize, usize) {
-        (self.nx, self.ny)
-    }
-}
-
-/// Caller-owned work space of [`NormalOperator::apply`].
-#[derive(Debug, Clone)]
-pub struct NormalScratch(ConvScratch);
-
 impl<'a> NormalProblem<'a> {
     /// Supported relative tolerances, inclusive: below $10^{-12}$ the gap residual reaches the
     /// rounding of the FFT products (about $10^{-15}\log N$ times the ratio of the largest
     /// elastic displacement to the gap scale); above $10^{-1}$ the contact is not meaningful.
     pub const TOLERANCE_RANGE: (f64, f64) = (1e-12, 1e-1);
+
+    /// Plan the influence operator of this problem's lattice, boundary and bodies (reusable
+    /// across loads with [`NormalProblem::solve_with`]).
+    #[must_use]
+    pub fn operator(&self) -> NormalOperator {
+        let c = Compliance::pair(&self.bodies[0], &self.bodies[1]);
+        NormalOperator::new(self.nx, self.ny, (self.hx, self.hy), &c, self.boundary)
+    }
 
     /// A problem on `nx` × `ny` cells of `cell = (hx, hy)` (m) with the initial gap `gap`
     /// (m, row-major `j * nx + i`, positive = separated) between `bodies` = [substrate,
@@ -480,11 +349,11 @@ impl<'a> NormalProblem<'a> {
     /// # Errors
     /// See [`NormalProblem::solve_with`].
     pub fn solve(&self, load: NormalLoad) -> Result<NormalSolution> {
-        let op = NormalOperator::new(self);
+        let op = self.operator();
         self.solve_with(&op, load, None)
     }
 
-    /// Solve under `load` with a planned operator (from [`NormalOperator::new`] of this
+    /// Solve under `load` with a planned operator (from [`NormalProblem::operator`] of this
     /// problem's lattice, boundary and bodies) and an optional initial pressure (a warm start,
     /// e.g. the previous step of a load sweep; negative values are clipped).
     ///
@@ -506,17 +375,15 @@ impl<'a> NormalProblem<'a> {
             return Err(Error::LengthMismatch {
                 name: "operator lattice",
                 expected: n,
-                got: op.nx * op.ny,
+                got: op.lattice().0 * op.lattice().1,
             });
         }
         let c1 = Compliance::pair(&self.bodies[0], &self.bodies[1]).one_minus_nu;
-        if op.periodic != (self.boundary == Boundary::Periodic)
-            || op.planned != (self.hx, self.hy, c1)
-        {
+        if op.boundary() != self.boundary || op.planned() != (self.hx, self.hy, c1) {
             return Err(Error::OutOfDomain {
                 name: "operator",
                 value: f64::NAN,
-                allowed: "planned by NormalOperator::new for this lattice, boundary and bodies",
+                allowed: "planned by NormalProblem::operator for this lattice, boundary and bodies",
             });
         }
         let force = match load {
@@ -576,7 +443,7 @@ impl<'a> NormalProblem<'a> {
                         gap_scale: 0.0,
                         tolerance: self.tolerance,
                         fft_size: op.fft_size(),
-                        setup_seconds: op.setup_seconds,
+                        setup_seconds: op.setup_seconds(),
                         solve_seconds: t0.elapsed().as_secs_f64(),
                     },
                 ));
@@ -587,7 +454,7 @@ impl<'a> NormalProblem<'a> {
         match (warm, load) {
             (Some(w), _) => p.iter_mut().zip(w).for_each(|(p, w)| *p = w.max(0.0)),
             (None, NormalLoad::Approach(d)) => {
-                let k0 = op.self_term;
+                let k0 = op.self_term();
                 p.iter_mut().zip(g0).for_each(|(p, g)| *p = ((d - g) / k0).max(0.0));
             }
             (None, NormalLoad::Force(_)) => p.fill(1.0),
@@ -766,7 +633,7 @@ impl<'a> NormalProblem<'a> {
                 None => {
                     if p.iter().all(|&v| v == 0.0) {
                         // Everything left the contact: restart from the rigid interference.
-                        let (k0, d) = (op.self_term, delta);
+                        let (k0, d) = (op.self_term(), delta);
                         p.iter_mut().zip(g0).for_each(|(p, g)| *p = ((d - g) / k0).max(0.0));
                         conjugate = false;
                         fresh = false;
@@ -786,7 +653,7 @@ impl<'a> NormalProblem<'a> {
             gap_scale: delta - gmin,
             tolerance: self.tolerance,
             fft_size: op.fft_size(),
-            setup_seconds: op.setup_seconds,
+            setup_seconds: op.setup_seconds(),
             solve_seconds: t0.elapsed().as_secs_f64(),
         };
         let s = self.finish(op, p, g, delta, info);

@@ -4,8 +4,11 @@
 //! linear limit.
 
 use stickslip_halfspace::Material;
-use stickslip_traction::rolling::{fastsim, kalker, Creepage, RollingSolution, SteadyRolling};
-use stickslip_traction::ContactGrid;
+use stickslip_lattice::ContactGrid;
+use stickslip_rolling::{
+    steady3d::fastsim, steady3d::kalker, steady3d::Creepage, steady3d::RollingSolution,
+    steady3d::SteadyRolling,
+};
 
 const G: f64 = 8e10;
 
@@ -214,7 +217,9 @@ fn fastsim_reproduces_the_linear_theory_at_small_creepage() {
 /// (`FASTSIM_FORCE_ERROR`, `POLACH_FORCE_ERROR`).
 #[test]
 fn approximate_theories_stay_within_their_stated_error() {
-    use stickslip_traction::rolling::{polach, FASTSIM_FORCE_ERROR, POLACH_FORCE_ERROR};
+    use stickslip_rolling::{
+        steady3d::polach, steady3d::FASTSIM_FORCE_ERROR, steady3d::POLACH_FORCE_ERROR,
+    };
     let nu = 0.28;
     let f = 0.3;
     let load = 1e4;

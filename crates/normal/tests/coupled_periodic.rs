@@ -10,10 +10,11 @@
 
 use stickslip_halfspace::material::Compliance;
 use stickslip_halfspace::Material;
+use stickslip_normal::Boundary;
+use stickslip_normal::NormalLoad;
+use stickslip_normal::{CoupledProblem, CrossOperator};
 use stickslip_traction::contract::Load;
-use stickslip_traction::coupled::{CoupledProblem, CrossOperator};
-use stickslip_traction::normal::Boundary;
-use stickslip_traction::{NormalLoad, Tolerance};
+use stickslip_traction::Tolerance;
 
 #[test]
 fn periodic_cross_operator_is_the_plane_strain_closed_form_on_sinusoids() {

@@ -1,4 +1,4 @@
-//! Subsurface field on a lattice (`traction::field`): FFT against the dense sum of exact
+//! Subsurface field on a lattice (`lattice::field`): FFT against the dense sum of exact
 //! rectangle stresses, the Hertz sphere (Huber/Hamilton closed form, Johnson eq. 3.45 on the
 //! axis), the sliding sphere against quadrature of Boussinesq + Cerruti over the Hertz
 //! traction, a long strip against the 2D McEwen field, the periodic option against a direct
@@ -9,12 +9,12 @@ use stickslip_halfspace::hertz::sphere_field::hertz_sphere_stress;
 use stickslip_halfspace::mcewen::stress_potential;
 use stickslip_halfspace::point_load::{boussinesq_stress, cerruti_stress};
 use stickslip_halfspace::Stress3;
-use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
-use stickslip_traction::field::{
-    direct_stress, invariants, subsurface_field, Boundary, FieldConfig, Lattice, StressField,
-    SurfaceTraction,
+use stickslip_lattice::Error;
+use stickslip_lattice::{
+    field::direct_stress, field::invariants, field::subsurface_field, field::Boundary,
+    field::FieldConfig, field::Lattice, field::StressField, field::SurfaceTraction,
 };
-use stickslip_traction::Error;
+use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 
 /// Tolerances of this file, each with its reason.
 mod tol {
@@ -526,7 +526,7 @@ fn bad_input_is_an_error() {
 /// scattered arrays carry its values.
 #[test]
 fn lattice_from_contact_grid() {
-    let g = stickslip_traction::ContactGrid::hertz_circle(1.0, 10.0, 21).unwrap();
+    let g = stickslip_lattice::ContactGrid::hertz_circle(1.0, 10.0, 21).unwrap();
     let (l, cell) = Lattice::from_grid(&g).unwrap();
     let p = l.scatter(&cell, &g.pressure).unwrap();
     for (k, &c) in cell.iter().enumerate() {

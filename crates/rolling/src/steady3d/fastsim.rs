@@ -24,8 +24,8 @@
 
 use super::{kalker, Creepage, RollingInfo, RollingMethod, RollingSolution, Rows};
 use crate::error::{Error, Result};
-use crate::grid::ContactGrid;
 use std::f64::consts::PI;
+use stickslip_lattice::ContactGrid;
 
 /// The flexibilities $(L_1, L_2, L_3)$ (m/Pa) for semi-axes `a` (rolling direction) and `b`,
 /// combined shear modulus `g` and Poisson ratio `nu`.

@@ -4,9 +4,9 @@
 mod fast_common;
 use fast_common::{steel, tol};
 use stickslip_halfspace::Material;
-use stickslip_traction::fast::TensorConvolution;
-use stickslip_traction::influence::{tensor_matrix, Compliance};
-use stickslip_traction::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
+use stickslip_lattice::TensorConvolution;
+use stickslip_lattice::{influence::tensor_matrix, influence::Compliance};
+use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
 
 /// Deterministic pseudo-random numbers in [-1, 1) (64-bit LCG; no dependency).
 fn lcg(seed: &mut u64) -> f64 {
@@ -124,5 +124,5 @@ fn off_lattice_grid_is_refused() {
     g.x[3] += 0.01;
     let e = TensorConvolution::new(&g, &c, InfluenceModel::ExactRectangle).unwrap_err();
     println!("{e}");
-    assert!(matches!(e, stickslip_traction::Error::OutOfDomain { .. }));
+    assert!(matches!(e, stickslip_lattice::Error::OutOfDomain { .. }));
 }

@@ -26,11 +26,11 @@
 use super::gmres::gmres;
 use super::{Creepage, RollingInfo, RollingMethod, RollingSolution, Rows};
 use crate::error::{Error, Result};
-use crate::fast::{ConvScratch, TensorConvolution};
-use crate::grid::ContactGrid;
-use crate::influence::{Compliance, InfluenceModel};
 use stickslip_halfspace::rectangle::{shear_x_displacement, shear_y_displacement, Rect};
 use stickslip_halfspace::Material;
+use stickslip_lattice::influence::{Compliance, InfluenceModel};
+use stickslip_lattice::ContactGrid;
+use stickslip_lattice::{ConvScratch, TensorConvolution};
 
 /// Name in error messages.
 const SOLVER: &str = "exact steady rolling";

@@ -410,7 +410,7 @@ impl ContactGrid {
     /// [`Error::EmptyGrid`] for an empty grid; [`Error::OutOfDomain`] if an element centre is
     /// not on the lattice of spacing $(h_x, h_y)$ through the lowest centre (by more than
     /// $10^{-6}$ cells), or two elements share a lattice cell.
-    pub(crate) fn lattice_cells(&self) -> Result<(usize, usize, f64, f64, Vec<usize>)> {
+    pub fn lattice_cells(&self) -> Result<(usize, usize, f64, f64, Vec<usize>)> {
         let n = self.len();
         if n == 0 {
             return Err(Error::EmptyGrid { reason: "the grid has no element" });
@@ -453,7 +453,7 @@ impl ContactGrid {
     /// fine one, with the block's mean pressure (missing cells counting zero, so the total
     /// normal force is kept) and the patch of its first fine element. `None` unless the
     /// lattice is at least `2 min_cells` across in both directions.
-    pub(crate) fn coarsened(&self, min_cells: usize) -> Option<(ContactGrid, Vec<usize>)> {
+    pub fn coarsened(&self, min_cells: usize) -> Option<(ContactGrid, Vec<usize>)> {
         let (nx, ny, x0, y0, cell) = self.lattice_cells().ok()?;
         if nx < 2 * min_cells || ny < 2 * min_cells {
             return None;

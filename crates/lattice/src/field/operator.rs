@@ -3,7 +3,7 @@
 
 use super::{Boundary, Lattice, SurfaceTraction};
 use crate::error::{Error, Result};
-use crate::fast::fast_size;
+use crate::operator::fast_size;
 use rayon::prelude::*;
 use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
