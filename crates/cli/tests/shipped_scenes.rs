@@ -5,7 +5,7 @@
 //! template of `stickslip new` (the kinds `stickslip new --list` prints, written by
 //! `stickslip new KIND FILE` into a temporary directory; stored as `template-<kind>.json`)
 //! and the built-in default scene (`stickslip run --out DIR` without a scene; stored as
-//! `default.json`). Each is run as `stickslip run SCENE --out DIR` with `RAYON_NUM_THREADS=1`
+//! `default.json`). Each is run as `stickslip run SCENE --out DIR` with `RAYON_NUM_THREADS=2`
 //! (see [`THREADS`]). The stored copies live in `tests/shipped/` beside this file: the
 //! run's `result.json`, plus under the key [`META`] the exit status and the sorted names of
 //! the files the run wrote into DIR.
@@ -50,17 +50,15 @@ const UPDATE_HOW: &str =
 /// status and the sorted file names of the out directory.
 const META: &str = "shipped_scenes_test";
 
-/// The thread count of every run. The normal-contact solver of surfaces on a lattice (used by
-/// `crowned_roller`, `sphere_as_surface` and the `surface` template) sums with rayon
-/// reductions whose order follows work stealing: with 2 threads its pressures and tractions
-/// differ from run to run by up to 3e-9 relative (contact.p0 by up to 4e-11). With one
-/// thread every result repeats bit for bit. The fast tangential solver, the steady-rolling
-/// solver and the LP give the same bits with 1 and 2 threads.
-const THREADS: &str = "1";
+/// The thread count of every run: more than one, so that the parallel paths are the ones
+/// checked. Every solver sums in fixed blocks added in order, so its bits do not depend on
+/// the thread count (checked with 1, 2 and 3 threads when this was set); a solver that sums
+/// in the order rayon's work stealing happens to take fails this test at once (the normal
+/// solver of surfaces did: pressures moved by up to 3e-9 relative between two runs).
+const THREADS: &str = "2";
 
 /// Largest relative difference |a - b| <= RELATIVE * max(|a|, |b|) accepted between two
-/// non-integer numbers. There is no absolute floor. With [`THREADS`] pinned every number
-/// repeats bit for bit, the numerical zeros too: `surface.gap` in contact cells (below
+/// non-integer numbers. There is no absolute floor. Every number repeats bit for bit, the numerical zeros too: `surface.gap` in contact cells (below
 /// 3e-16 m, against 7e-11 m to 1e-2 m outside) or FASTSIM's Fx of -4e-14 N beside Fy of
 /// 2e4 N in `wheel_rail_fastsim`. A floor would have to be set per key from its neighbours'
 /// scale, and would let such a zero grow by orders of magnitude unseen. A change that

@@ -24,7 +24,7 @@
 //! let pb = NormalProblem::new(16, 16, (1e-4, 1e-4), &gap, bodies, Boundary::Free).unwrap();
 //! let sol = pb.solve(NormalLoad::Force(1e3)).unwrap();
 //! assert!((sol.force - 1e3).abs() < 1e-6 * 1e3);
-//! assert_eq!(sol.contact_cells(), 256);
+//! assert_eq!(sol.contact_cells, 256);
 //! ```
 //!
 //! Units: SI (m, Pa, N).

@@ -501,41 +501,52 @@ impl<'a> NormalProblem<'a> {
             // control: mean over I_c).
             let f = pending;
             pending = 1.0;
-            let (gs, gc) = g
-                .par_iter_mut()
-                .zip(u.par_iter_mut().zip(g0.par_iter().zip(p.par_iter_mut())))
-                .map(|(g, (u, (g0, p)))| {
-                    *p *= f;
-                    *u *= f;
-                    *g = *u + g0;
-                    if *p > 0.0 {
-                        (*g, 1usize)
-                    } else {
-                        (0.0, 0)
-                    }
-                })
-                .reduce(|| (0.0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
+            let (gs, gc) = in_order(
+                g.par_chunks_mut(BLOCK)
+                    .zip(u.par_chunks_mut(BLOCK))
+                    .zip(g0.par_chunks(BLOCK).zip(p.par_chunks_mut(BLOCK)))
+                    .map(|((g, u), (g0, p))| {
+                        let (mut gs, mut gc) = (0.0, 0usize);
+                        for (g, (u, (g0, p))) in
+                            g.iter_mut().zip(u.iter_mut().zip(g0.iter().zip(p)))
+                        {
+                            *p *= f;
+                            *u *= f;
+                            *g = *u + g0;
+                            if *p > 0.0 {
+                                gs += *g;
+                                gc += 1;
+                            }
+                        }
+                        (gs, gc)
+                    }),
+            )
+            .into_iter()
+            .fold((0.0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
             delta = match load {
                 NormalLoad::Approach(d) => d,
                 NormalLoad::Force(_) => gs / gc.max(1) as f64,
             };
             // The gap, the residuals and the squared gap on I_c in one pass.
-            let (emax, pg, ps, gg) = g
-                .par_iter_mut()
-                .zip(p.par_iter())
-                .map(|(g, &p)| {
-                    *g -= delta;
-                    let g = *g;
-                    if p > 0.0 {
-                        (g.abs(), p * g.abs(), p, g * g)
-                    } else {
-                        ((-g).max(0.0), 0.0, 0.0, 0.0)
+            let (emax, pg, ps, gg) =
+                in_order(g.par_chunks_mut(BLOCK).zip(p.par_chunks(BLOCK)).map(|(g, p)| {
+                    let mut acc = (0.0f64, 0.0, 0.0, 0.0);
+                    for (g, &p) in g.iter_mut().zip(p) {
+                        *g -= delta;
+                        let g = *g;
+                        if p > 0.0 {
+                            acc =
+                                (acc.0.max(g.abs()), acc.1 + p * g.abs(), acc.2 + p, acc.3 + g * g);
+                        } else {
+                            acc.0 = acc.0.max((-g).max(0.0));
+                        }
                     }
-                })
-                .reduce(
-                    || (0.0, 0.0, 0.0, 0.0),
-                    |a, b| (a.0.max(b.0), a.1 + b.1, a.2 + b.2, a.3 + b.3),
-                );
+                    acc
+                }))
+                .into_iter()
+                .fold((0.0f64, 0.0, 0.0, 0.0), |a, b| {
+                    (a.0.max(b.0), a.1 + b.1, a.2 + b.2, a.3 + b.3)
+                });
             res = residuals(emax, pg, ps, delta - gmin, sum_target);
             if res.3 <= tol {
                 if fresh {
@@ -562,52 +573,61 @@ impl<'a> NormalProblem<'a> {
             op.apply(&t, &mut r, &mut scratch);
             products += 1;
             // tau = sum g t / sum (r - rbar) t over I_c (force control: rbar the mean of r).
-            let (num, den, rs, ts, c) = p
-                .par_iter()
-                .zip(g.par_iter().zip(t.par_iter().zip(r.par_iter())))
-                .filter(|(p, _)| **p > 0.0)
-                .map(|(_, (g, (t, r)))| (g * t, r * t, *r, *t, 1usize))
-                .reduce(
-                    || (0.0, 0.0, 0.0, 0.0, 0),
-                    |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2, a.3 + b.3, a.4 + b.4),
-                );
+            let (num, den, rs, ts, c) = in_order(
+                p.par_chunks(BLOCK)
+                    .zip(g.par_chunks(BLOCK).zip(t.par_chunks(BLOCK).zip(r.par_chunks(BLOCK))))
+                    .map(|(p, (g, (t, r)))| {
+                        let mut acc = (0.0, 0.0, 0.0, 0.0, 0usize);
+                        for (p, (g, (t, r))) in p.iter().zip(g.iter().zip(t.iter().zip(r))) {
+                            if *p > 0.0 {
+                                acc =
+                                    (acc.0 + g * t, acc.1 + r * t, acc.2 + r, acc.3 + t, acc.4 + 1);
+                            }
+                        }
+                        acc
+                    }),
+            )
+            .into_iter()
+            .fold((0.0, 0.0, 0.0, 0.0, 0), |a, b| {
+                (a.0 + b.0, a.1 + b.1, a.2 + b.2, a.3 + b.3, a.4 + b.4)
+            });
             let rbar = if force.is_some() { rs / c.max(1) as f64 } else { 0.0 };
             let den = den - rbar * ts;
             let tau = if den > 0.0 { num / den } else { 0.0 };
             // Step, projection, re-entry of penetrating cells, u -= tau K t, and the new force,
             // in one pass; `changes` the departures from p - tau t (clipped or re-entered
             // cells), whose columns correct u.
-            let (changes, sum) = p
-                .par_iter_mut()
-                .zip(u.par_iter_mut().zip(g.par_iter().zip(t.par_iter().zip(r.par_iter()))))
-                .enumerate()
-                .fold(
-                    || (Vec::new(), 0.0),
-                    |(mut ch, mut sum): (Vec<(usize, f64)>, f64), (k, (p, (u, (g, (t, r)))))| {
-                        *u -= tau * r;
-                        if *p > 0.0 {
-                            let free = *p - tau * t;
-                            *p = free.max(0.0);
-                            if free < 0.0 {
-                                ch.push((k, -free));
-                            }
-                        } else if *g < 0.0 {
-                            *p = -tau.max(0.0) * g;
+            let blocks = in_order(
+                p.par_chunks_mut(BLOCK)
+                    .zip(u.par_chunks_mut(BLOCK))
+                    .zip(g.par_chunks(BLOCK).zip(t.par_chunks(BLOCK).zip(r.par_chunks(BLOCK))))
+                    .enumerate()
+                    .map(|(b, ((p, u), (g, (t, r))))| {
+                        let (mut ch, mut sum) = (Vec::new(), 0.0);
+                        let cells =
+                            p.iter_mut().zip(u.iter_mut().zip(g.iter().zip(t.iter().zip(r))));
+                        for (i, (p, (u, (g, (t, r))))) in cells.enumerate() {
+                            let k = b * BLOCK + i;
+                            *u -= tau * r;
                             if *p > 0.0 {
-                                ch.push((k, *p));
+                                let free = *p - tau * t;
+                                *p = free.max(0.0);
+                                if free < 0.0 {
+                                    ch.push((k, -free));
+                                }
+                            } else if *g < 0.0 {
+                                *p = -tau.max(0.0) * g;
+                                if *p > 0.0 {
+                                    ch.push((k, *p));
+                                }
                             }
+                            sum += *p;
                         }
-                        sum += *p;
                         (ch, sum)
-                    },
-                )
-                .reduce(
-                    || (Vec::new(), 0.0),
-                    |(mut a, sa), (b, sb)| {
-                        a.extend(b);
-                        (a, sa + sb)
-                    },
-                );
+                    }),
+            );
+            let sum = blocks.iter().fold(0.0, |a, b| a + b.1);
+            let changes: Vec<(usize, f64)> = blocks.into_iter().flat_map(|b| b.0).collect();
             let entered = changes.iter().filter(|&&(k, _)| t[k] == 0.0).count();
             conjugate = entered == 0;
             // Few changes: add their columns to u; many: a full product at the next check
@@ -705,9 +725,22 @@ impl<'a> NormalProblem<'a> {
     }
 }
 
+/// Cells per block of the parallel passes. Every sum over the lattice adds fixed blocks of
+/// this many cells (each in index order) and then the block results in block order, so a
+/// solve gives the same bits for any number of threads.
+const BLOCK: usize = 4096;
+
+/// The results of a parallel pass over blocks, in block order (their sum, taken by the caller
+/// in this order, does not depend on how rayon split the work).
+fn in_order<T: Send>(blocks: impl IndexedParallelIterator<Item = T>) -> Vec<T> {
+    let mut out = Vec::with_capacity(blocks.len());
+    blocks.collect_into_vec(&mut out);
+    out
+}
+
 /// Scale `p` to the sum `target`; false if its sum is zero.
 fn rescale(p: &mut [f64], target: f64) -> bool {
-    let s: f64 = p.par_iter().sum();
+    let s = in_order(p.par_chunks(BLOCK).map(|b| b.iter().sum::<f64>())).iter().sum::<f64>();
     if s > 0.0 {
         let f = target / s;
         p.par_iter_mut().for_each(|p| *p *= f);
