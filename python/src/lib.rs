@@ -52,7 +52,7 @@ fn raise(e: SceneError) -> PyErr {
 }
 
 fn read(text: &str, file: Option<PathBuf>) -> PyResult<Scene> {
-    Scene::from_toml_str(text, file).map_err(raise)
+    stickslip_scene::read_scene(text, file).map_err(raise)
 }
 
 /// TOML text from a JSON object (a scene given as a dict).

@@ -206,7 +206,7 @@ fn note(text: &str) {
 
 fn load(scene: Option<&PathBuf>) -> Result<Scene, SceneError> {
     match scene {
-        Some(p) => Scene::from_file(p),
+        Some(p) => stickslip_scene::read_scene_file(p),
         None => Ok(Scene::default_scene()),
     }
 }

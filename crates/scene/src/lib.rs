@@ -71,11 +71,11 @@ pub mod sweep;
 pub mod templates;
 pub mod units;
 
-pub use error::{ErrorKind, SceneError};
+pub use error::{Check, ErrorKind, Issue, SceneError};
 pub use exec::outcome::{
-    Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
-    FieldOut, FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions,
-    SolverOut, SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
+    Audit, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax, FieldOut,
+    FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions, SolverOut,
+    SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
 };
 pub use output::{write_outputs, write_outputs_report, write_outputs_with, WriteOptions, Written};
 pub use overview::scenes_page;
@@ -94,9 +94,45 @@ pub use report::ReportContext;
 pub fn run(scene: &Scene, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
     Plan::new(scene)?.execute(opts)
 }
+
+/// Every refusal a run gives before solving: the scene's own validation
+/// ([`Scene::validate`]), then the planner's ([`Plan::new`]), located in the file when the
+/// scene came from one.
+///
+/// # Errors
+/// The first refusal.
+#[allow(clippy::result_large_err)]
+pub fn check(scene: &Scene) -> Result<(), SceneError> {
+    scene.validate()?;
+    Plan::new(scene).map(|_| ())
+}
+
+/// Read a scene from TOML text as a run does: [`Scene::from_toml_str`], then the planner's
+/// refusals ([`check`]). `file` is used in error messages only.
+///
+/// # Errors
+/// A [`SceneError`] with the file, line, column, key and a hint.
+#[allow(clippy::result_large_err)]
+pub fn read_scene(text: &str, file: Option<std::path::PathBuf>) -> Result<Scene, SceneError> {
+    let scene = Scene::from_toml_str(text, file)?;
+    Plan::new(&scene)?;
+    Ok(scene)
+}
+
+/// Read a scene file as a run does: [`Scene::from_file`], then the planner's refusals
+/// ([`check`]).
+///
+/// # Errors
+/// A [`SceneError`] with the file, line, column, key and a hint.
+#[allow(clippy::result_large_err)]
+pub fn read_scene_file(path: &std::path::Path) -> Result<Scene, SceneError> {
+    let scene = Scene::from_file(path)?;
+    Plan::new(&scene)?;
+    Ok(scene)
+}
 pub use scene::{
-    Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
-    NormalLoad, NormalSweep, Outputs, Patch, PatchShape, Scene, SceneBuilder, SolverOptions,
-    Source, Substrate, DEFAULT_SCENE, MAX_GRID,
+    patch_bounds, Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method,
+    Motion, NormalLoad, NormalSweep, Outputs, Patch, PatchShape, Scene, SceneBuilder,
+    SolverOptions, Source, Substrate, DEFAULT_SCENE, MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};

@@ -3,7 +3,7 @@
 //! LP or fast-solver grid too large for memory, and output directories that cannot be written. Each error
 //! names the file, line and column, the key, and what is allowed; no file is left behind.
 
-use stickslip_scene::{run, write_outputs, ErrorKind, RunOptions, Scene, SceneError};
+use stickslip_scene::{read_scene, run, write_outputs, ErrorKind, RunOptions, Scene, SceneError};
 
 const ROLLER: &str = r#"[geometry]
 kind = "cylinder"
@@ -33,7 +33,7 @@ friction = 0.1
 "#;
 
 fn parse(s: &str) -> SceneError {
-    Scene::from_toml_str(s, Some("bad.toml".into())).unwrap_err()
+    read_scene(s, Some("bad.toml".into())).unwrap_err()
 }
 
 struct Case {

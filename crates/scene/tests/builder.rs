@@ -3,7 +3,8 @@
 //! the same key and hint; refusals found after reading are located in the file.
 
 use stickslip_scene::{
-    run, Elastic, ErrorKind, Geometry, Indenter, Method, RunOptions, Scene, Substrate,
+    check, read_scene, run, Elastic, ErrorKind, Geometry, Indenter, Method, RunOptions, Scene,
+    Substrate,
 };
 
 const IN: f64 = 0.0254;
@@ -62,14 +63,14 @@ fn builder_refuses_what_the_reader_refuses() {
     let e = ex1_builder().tangential(400.0 * LBF, 0.0).build().unwrap_err();
     assert_eq!((e.kind, e.key.as_deref()), (ErrorKind::Impossible, Some("load.tangential")));
 
-    // The planner's refusals come through the same door.
-    let e = ex1_builder().solver(Method::Fast, 32, 0.5).build().unwrap_err();
+    // The planner's refusals of a built scene, as a run gives them before solving.
+    let e = check(&ex1_builder().solver(Method::Fast, 32, 0.5).build().unwrap()).unwrap_err();
     assert_eq!(e.key.as_deref(), Some("solver.tolerance"), "{e}");
     assert!(e.hint.as_deref().unwrap_or("").contains("1e-14"), "{e}");
 }
 
 fn err(src: &str) -> stickslip_scene::SceneError {
-    Scene::from_toml_str(src, Some("s.toml".into())).unwrap_err()
+    read_scene(src, Some("s.toml".into())).unwrap_err()
 }
 
 const BASE: &str = "[geometry]\nkind = \"sphere\"\nradius = 0.01\n[substrate]\nmodel = \"homogeneous\"\ne = 2e11\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nnormal = 100.0\ntangential = 10.0\nfriction = 0.2\n";

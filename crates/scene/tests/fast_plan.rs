@@ -11,7 +11,7 @@ mod common;
 use common::{rel, scenes_dir, tol, INCH, LBF, PSI};
 use std::f64::consts::PI;
 use stickslip_scene::plan::{MAX_LP_ELEMENTS, MEMORY_LIMIT_BYTES};
-use stickslip_scene::{run, Effect, ErrorKind, Plan, RunOptions, Scene, Technique};
+use stickslip_scene::{read_scene, run, Effect, ErrorKind, Plan, RunOptions, Scene, Technique};
 
 fn scene_text(name: &str) -> String {
     std::fs::read_to_string(scenes_dir().join(name)).unwrap()
@@ -60,7 +60,7 @@ fn auto_picks_the_lp_up_to_its_limit_and_the_fast_solver_beyond() {
         }
     }
     // Asking for the LP beyond its limit is refused, with the fast solver as the hint.
-    let e = Scene::from_toml_str(
+    let e = read_scene(
         &base.replace("grid = 10", &format!("method = \"lp\"\ngrid = {}", below + 1)),
         Some("lp.toml".into()),
     )
@@ -87,7 +87,7 @@ fn force_and_moment_together_go_to_the_fast_solver() {
     assert_eq!(plan.technique(Effect::Twist), Some(Technique::Fast));
     assert!(plan.grid_solver.as_deref().unwrap().contains("together"));
     for method in ["lp", "closed-form"] {
-        let e = Scene::from_toml_str(
+        let e = read_scene(
             &base.replace("grid = 20", &format!("method = \"{method}\"\ngrid = 20")),
             Some("both.toml".into()),
         )
@@ -107,7 +107,7 @@ fn the_memory_estimate_admits_large_fast_grids_and_refuses_what_cannot_fit() {
             &base.replace("grid = 256", &format!("grid = {grid}")),
             Some("big.toml".into()),
         )
-        .map(|s| Plan::new(&s).unwrap())
+        .and_then(|s| Plan::new(&s))
     };
     for grid in [1024, 2048, 4096] {
         let p = plan_of(grid).unwrap_or_else(|e| panic!("grid {grid}: {e}"));
@@ -197,7 +197,7 @@ fn loads_beyond_the_capacity_name_the_load_key() {
     // A moment alone beyond the spin capacity f sum p_k r_k A_k (about 150 N m here): refused
     // by validation, before any solver runs, at the moment's line.
     let text = base.replace("tangential = \"700 lbf\"\n", "").replace("80.0", "200.0");
-    let e = Scene::from_toml_str(&text, Some("test.toml".into())).unwrap_err();
+    let e = read_scene(&text, Some("test.toml".into())).unwrap_err();
     println!("{e}");
     assert_eq!(e.kind, ErrorKind::Impossible);
     assert_eq!(e.key.as_deref(), Some("load.moment"));
@@ -205,11 +205,8 @@ fn loads_beyond_the_capacity_name_the_load_key() {
     // A force below f P (1312.5 lbf) with a moment on top that together exceed what the
     // contact can carry (outside its limit surface): refused before solving, with the factor
     // by which the pair could be scaled.
-    let e = Scene::from_toml_str(
-        &base.replace("\"700 lbf\"", "\"1300 lbf\""),
-        Some("test.toml".into()),
-    )
-    .unwrap_err();
+    let e = read_scene(&base.replace("\"700 lbf\"", "\"1300 lbf\""), Some("test.toml".into()))
+        .unwrap_err();
     println!("{e}");
     assert_eq!(e.kind, ErrorKind::Impossible);
     assert_eq!(e.key.as_deref(), Some("load.moment"));

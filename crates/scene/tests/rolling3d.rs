@@ -2,7 +2,9 @@
 //! position, full slip solved and said, the accuracy knob choosing the theory, and the
 //! outputs (creep forces, micro-slip maps) consistent with the traction written.
 
-use stickslip_scene::{run, ErrorKind, Plan, RunOptions, Scene, SceneError, SurfaceOut, Technique};
+use stickslip_scene::{
+    read_scene, run, ErrorKind, Plan, RunOptions, Scene, SceneError, SurfaceOut, Technique,
+};
 
 fn wheel(creepage: &str, extra: &str) -> String {
     format!(
@@ -27,7 +29,7 @@ creepage = {creepage}
 }
 
 fn refused(text: &str) -> SceneError {
-    Scene::from_toml_str(text, Some("wheel.toml".into())).unwrap_err()
+    read_scene(text, Some("wheel.toml".into())).unwrap_err()
 }
 
 fn assert_refusal(e: &SceneError, kind: ErrorKind, key: &str, line: usize) {

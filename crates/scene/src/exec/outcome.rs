@@ -6,6 +6,9 @@ use stickslip_traction::ElementState;
 
 use crate::plan::Effect;
 
+// One check of the audit: defined beside the error, whose audit failures carry the checks.
+pub use crate::error::Check;
+
 /// Progress of a run, reported to [`RunOptions::progress`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Progress {
@@ -452,21 +455,6 @@ pub struct CycleOut {
     pub delta: Vec<f64>,
     /// Energy dissipated per cycle, per body [substrate, indenter] (J).
     pub energy_per_cycle: [f64; 2],
-}
-
-/// One check of the audit: what was measured, the limit, and whether it passed.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Check {
-    /// What is checked, e.g. "coulomb", "normal resultant".
-    pub name: &'static str,
-    /// What was measured (relative, or in the unit the description states).
-    pub value: f64,
-    /// The largest value that passes.
-    pub limit: f64,
-    /// value <= limit.
-    pub pass: bool,
-    /// What the value means.
-    pub what: String,
 }
 
 /// `audit` in result.json: every check run on the result before it is written.

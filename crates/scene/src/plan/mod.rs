@@ -388,11 +388,6 @@ pub struct Plan {
     pub recipe: Recipe,
 }
 
-/// The planner's refusal of `scene`, if any (the scene reader locates it in the file).
-pub(crate) fn check(scene: &Scene) -> Result<(), Issue> {
-    build::build(scene).map(|_| ())
-}
-
 /// Points along the surface of 2D results.
 pub const SURFACE_POINTS: usize = 201;
 
@@ -404,8 +399,8 @@ impl Plan {
     /// Plan `scene`.
     ///
     /// # Errors
-    /// A [`SceneError`] naming the key for a combination no solver handles. A scene read by
-    /// [`Scene::from_toml_str`] has already passed this check (with line and column).
+    /// A [`SceneError`] naming the key (and, for a scene read from a file, the line and
+    /// column) of a combination no solver handles.
     #[allow(clippy::result_large_err)]
     pub fn new(scene: &Scene) -> Result<Plan, SceneError> {
         build::build(scene).map_err(|i| scene.locate(i))

@@ -41,7 +41,7 @@ pub use vary::{Vary, VaryError, VaryValue};
 
 use crate::error::{ErrorKind, SceneError};
 use crate::exec::outcome::Outcome;
-use crate::{MachineLimits, Plan, RunOptions, Scene};
+use crate::{read_scene, MachineLimits, Plan, RunOptions};
 
 /// The columns before the varied keys: the point index, the sweep's identity (a hash of the
 /// scene text and the `--vary` specifications) and the number of points of the whole sweep.
@@ -148,7 +148,7 @@ impl Sweep {
     pub fn new(text: &str, file: Option<PathBuf>, vary: &[Vary]) -> Result<Sweep, SceneError> {
         if let Err(e) = text.parse::<toml_edit::DocumentMut>() {
             // The scene reader locates the error (file:line:column).
-            return Err(match Scene::from_toml_str(text, file.clone()) {
+            return Err(match read_scene(text, file.clone()) {
                 Err(se) => se,
                 Ok(_) => SceneError::new(ErrorKind::Syntax, format!("the scene is not TOML: {e}"))
                     .in_file(file),
@@ -186,7 +186,7 @@ impl Sweep {
         // A reading error (a misspelt key, a missing table) fails every point the same way:
         // refuse it at once. Range and combination refusals may depend on the point.
         if !s.is_empty() {
-            if let Err(e) = Scene::from_toml_str(&s.point_text(0)?, s.file.clone()) {
+            if let Err(e) = read_scene(&s.point_text(0)?, s.file.clone()) {
                 if matches!(e.kind, ErrorKind::Syntax | ErrorKind::Schema | ErrorKind::Unit) {
                     return Err(e);
                 }
@@ -281,7 +281,7 @@ impl Sweep {
     /// seconds and the memory available), execute and audit; the row of the table.
     pub fn run_point(&self, i: usize, time_limit: f64) -> Vec<Cell> {
         let result = self.point_text(i).and_then(|text| {
-            let scene = Scene::from_toml_str(&text, self.file.clone())?;
+            let scene = read_scene(&text, self.file.clone())?;
             let plan = Plan::new(&scene)?;
             plan.check_machine(&MachineLimits::detect(time_limit))?;
             plan.execute(&RunOptions::default())
