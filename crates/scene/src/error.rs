@@ -29,6 +29,24 @@ pub enum ErrorKind {
 }
 
 impl ErrorKind {
+    /// The kind in plain words, as a sweep's table (`error_kind`) and the Python package's
+    /// errors name it: "io", "syntax", "schema", "unit", "out of range", "impossible",
+    /// "unsupported", "solver", "audit".
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            ErrorKind::Io => "io",
+            ErrorKind::Syntax => "syntax",
+            ErrorKind::Schema => "schema",
+            ErrorKind::Unit => "unit",
+            ErrorKind::OutOfRange => "out of range",
+            ErrorKind::Impossible => "impossible",
+            ErrorKind::Unsupported => "unsupported",
+            ErrorKind::Solver => "solver",
+            ErrorKind::Audit => "audit",
+        }
+    }
+
     /// The exit status of the `stickslip` program for an error of this kind, the one place
     /// the mapping lives:
     ///

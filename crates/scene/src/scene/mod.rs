@@ -1,4 +1,8 @@
 //! The validated scene: every quantity in SI, every value inside what the physics allows.
+//!
+//! The enums here are exhaustive on purpose: the planner (`stickslip-run`) matches every
+//! variant, so a new kind of geometry, body, load or output does not compile until the
+//! planner has decided how to serve it.
 
 // Scene errors are built on the cold path of parsing and carry the file, position, key and
 // hint for the user; boxing them would buy nothing measurable.
@@ -18,7 +22,6 @@ use crate::error::{ErrorKind, Issue, SceneError};
 
 /// Contact geometry: what touches what.
 #[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
 pub enum Geometry {
     /// A cylinder of radius R on a half-plane (2D, plane strain; loads per unit length).
     Cylinder {
@@ -71,7 +74,6 @@ pub enum SurfaceBoundary {
 
 /// The smooth part of a surface's initial gap, centred on the lattice.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Profile {
     /// A sphere (relative radius R): $g = r^2/(2R)$.
     Sphere {
@@ -170,7 +172,6 @@ impl Geometry {
 
 /// How an elliptical contact is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Ellipse {
     /// The contact semi-axes a (along x) and b (along y), m.
     SemiAxes {
@@ -201,7 +202,6 @@ pub struct Patch {
 
 /// Outline of a patch, centred on its `centre`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum PatchShape {
     /// Axis-aligned square of this side (m).
     Square {
@@ -299,7 +299,6 @@ pub struct Elastic {
 
 /// The body below.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Substrate {
     /// Homogeneous, linear elastic.
     Homogeneous(Elastic),
@@ -325,7 +324,6 @@ pub enum Substrate {
 
 /// The body above.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Indenter {
     /// Rigid.
     Rigid,
@@ -337,7 +335,6 @@ pub enum Indenter {
 
 /// How the normal load is prescribed.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum NormalLoad {
     /// The force P (N/m in 2D, N in 3D).
     Force(f64),
@@ -388,7 +385,6 @@ impl NormalSweep {
 
 /// Motion.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Motion {
     /// No motion beyond the applied loads.
     Static,
@@ -429,7 +425,6 @@ pub struct FieldGrid {
 
 /// Unit of a field grid's coordinates.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
 pub enum FieldScale {
     /// The contact half-width a.
     HalfWidth,
@@ -461,7 +456,6 @@ pub struct Outputs {
 
 /// Which method the user asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
 pub enum Method {
     /// Let the planner choose.
     Auto,
