@@ -55,6 +55,7 @@
 
 pub mod exec;
 mod overview;
+mod patches;
 pub mod plan;
 pub mod reference;
 

@@ -6,8 +6,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::plan::{Effect, Plan, Technique};
-use crate::read_scene;
-use stickslip_scene::{ErrorKind, SceneError};
+use stickslip_scene::{ErrorKind, Scene, SceneError};
 
 /// The Markdown page for the `*.toml` scenes of `dir`, sorted by file name. `link_prefix` is
 /// the path from the page to `dir` (e.g. `../scenes`). The output depends only on the
@@ -30,7 +29,7 @@ pub fn scenes_page(dir: &Path, link_prefix: &str) -> Result<String, SceneError> 
     let mut rows = Vec::new();
     for name in &names {
         let text = std::fs::read_to_string(dir.join(name)).map_err(io)?;
-        let scene = read_scene(&text, Some(name.into()))?;
+        let scene = Scene::from_toml_str(&text, Some(name.into()))?;
         let plan = Plan::new(&scene)?;
         rows.push((name.clone(), scene, plan));
     }

@@ -17,14 +17,11 @@
 
 use super::outcome::{Audit, Check, Outcome, SurfaceOut};
 use super::Ctx;
+use crate::patches::LATTICE_AREA_TOLERANCE;
 use crate::plan::recipe::{
     ContactRecipe, GridStep, Recipe, RollingMethod, RollingModel, RollingStep, Tangential,
 };
 use crate::plan::Plan;
-
-/// How far the lattice's total normal force may be from the applied one: a lattice of
-/// square cells covers a patch's area only approximately.
-pub const LATTICE_AREA_TOLERANCE: f64 = 0.02;
 
 /// How far the stick correction of a closed form shown on a lattice may be scaled to make the
 /// lattice resultant exact (`exec/friction.rs`, `sample_consistently`): $|\lambda - 1|$ is the

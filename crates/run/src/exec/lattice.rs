@@ -1,10 +1,7 @@
 //! The lattice of a 3D result: element-centre coordinates and the per-cell pressure,
 //! traction and stick flag that result.json and the CSV files carry.
 
-use stickslip_traction::{Patch as GridPatch, PatchPressure, Shape};
-
 use super::outcome::SurfaceOut;
-use stickslip_scene::{Patch, PatchShape};
 
 /// Lattice arrays, `p[i][j]` at (`x[i]`, `y[j]`).
 #[derive(Debug, Clone)]
@@ -67,27 +64,4 @@ impl Lattice {
             gap,
         }
     }
-}
-
-/// The scene's patches as the traction crate's grid patches.
-pub(crate) fn grid_patches(ps: &[Patch]) -> Vec<GridPatch> {
-    ps.iter()
-        .map(|p| GridPatch {
-            shape: match p.shape {
-                PatchShape::Square { side } => {
-                    Shape::Rectangle { cx: p.centre[0], cy: p.centre[1], wx: side, wy: side }
-                }
-                PatchShape::Rectangle { sides } => Shape::Rectangle {
-                    cx: p.centre[0],
-                    cy: p.centre[1],
-                    wx: sides[0],
-                    wy: sides[1],
-                },
-                PatchShape::Circle { radius } => {
-                    Shape::Circle { cx: p.centre[0], cy: p.centre[1], r: radius }
-                }
-            },
-            pressure: PatchPressure::Uniform(p.pressure),
-        })
-        .collect()
 }

@@ -26,8 +26,8 @@ mod lattice;
 mod normal;
 pub(crate) mod outcome;
 
-pub use audit::{LATTICE_AREA_TOLERANCE, SAMPLING_TOLERANCE};
-pub(crate) use lattice::grid_patches;
+pub use crate::patches::LATTICE_AREA_TOLERANCE;
+pub use audit::SAMPLING_TOLERANCE;
 mod roll3d;
 mod rolling;
 mod surface;
@@ -140,6 +140,16 @@ fn locate(plan: &Plan, e: SceneError) -> SceneError {
         _ => e,
     };
     e.in_file(plan.file.clone())
+}
+
+impl Plan {
+    /// Run this plan, stage by stage ([`execute`]).
+    ///
+    /// # Errors
+    /// See [`execute`].
+    pub fn execute(&self, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
+        execute(self, opts)
+    }
 }
 
 /// Run `plan`, stage by stage, as planned.

@@ -57,12 +57,12 @@ pub(crate) fn tolerance_for(scene: &Scene, what: &str, range: (f64, f64)) -> Res
 /// The lattice of a patch scene must resolve every patch: each patch holds element
 /// centres, no element belongs to two patches, and the lattice's normal force (pressure
 /// times the cells whose centres lie in a patch) is within
-/// [`crate::exec::LATTICE_AREA_TOLERANCE`] of the patches' force. Otherwise the refusal
+/// [`crate::patches::LATTICE_AREA_TOLERANCE`] of the patches' force. Otherwise the refusal
 /// names the smallest grid found that does.
 pub(crate) fn lattice(scene: &Scene) -> Result<(), Issue> {
-    use crate::exec::LATTICE_AREA_TOLERANCE as TOL;
+    use crate::patches::LATTICE_AREA_TOLERANCE as TOL;
     let Geometry::Patches(ps) = &scene.geometry else { return Ok(()) };
-    let patches = crate::exec::grid_patches(ps);
+    let patches = crate::patches::grid_patches(ps);
     let (lo, hi) = stickslip_scene::patch_bounds(ps);
     let force: f64 = ps.iter().map(stickslip_scene::Patch::force).sum();
     // Relative error of the lattice force at `n` elements across the largest extent, or
@@ -153,7 +153,7 @@ pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
         Geometry::Patches(ps) => {
             let (lo, hi) = stickslip_scene::patch_bounds(ps);
             let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
-            ContactGrid::from_patches(h, h, (lo[0], lo[1]), &crate::exec::grid_patches(ps))
+            ContactGrid::from_patches(h, h, (lo[0], lo[1]), &crate::patches::grid_patches(ps))
         }
         _ => return Ok(()),
     };

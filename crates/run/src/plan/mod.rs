@@ -405,15 +405,6 @@ impl Plan {
         build::build(scene).map_err(|i| scene.locate(i))
     }
 
-    /// Run this plan, stage by stage ([`crate::exec::execute`]).
-    ///
-    /// # Errors
-    /// See [`crate::exec::execute`].
-    #[allow(clippy::result_large_err)]
-    pub fn execute(&self, opts: &crate::RunOptions<'_>) -> Result<crate::Outcome, SceneError> {
-        crate::exec::execute(self, opts)
-    }
-
     /// The entry of `effect`.
     pub fn effect(&self, effect: Effect) -> &EffectPlan {
         &self.effects[effect.index()]
