@@ -6,7 +6,10 @@
 //! outputs); its reference is the repository's `docs/SCENES.md`. This crate knows the format
 //! only: it solves nothing and decides nothing about methods. The run (planner, stages,
 //! audit) is `stickslip-run`, the result files are `stickslip-report`, sweeps are
-//! `stickslip-sweep`.
+//! `stickslip-sweep`. The one routine it takes from a physics crate is the synthesis of a
+//! random rough surface (`stickslip_traction::roughness`), which the reader calls for
+//! `[geometry.roughness]` without a file: the heights are part of the scene as read, and a
+//! parameter the synthesis refuses is located in the file like any other value.
 //!
 //! - [`Scene`]: the typed scene (every quantity in SI); [`Scene::from_toml_str`] and
 //!   [`Scene::from_file`] read and validate it, [`SceneBuilder`] builds it in code and

@@ -24,8 +24,7 @@ use super::{linspace, solver_err, Ctx};
 use crate::plan::recipe::{
     ContactField, ContactFieldMethod, LineField, LineFieldMethod, LineFriction,
 };
-use stickslip_scene::FieldScale;
-use stickslip_scene::SceneError;
+use stickslip_scene::{FieldScale, SceneError};
 
 /// The stresses on the field grid (empty arrays when not asked for).
 pub(crate) fn line(

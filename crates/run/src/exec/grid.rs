@@ -13,8 +13,7 @@ use super::normal::ContactSolution;
 use super::outcome::{GridZones, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, Force, GridMethod};
-use stickslip_scene::SurfaceBoundary;
-use stickslip_scene::{ErrorKind, SceneError};
+use stickslip_scene::{ErrorKind, SceneError, SurfaceBoundary};
 
 /// The grid solve of `method` under a force, a moment, or both.
 #[allow(clippy::too_many_lines, clippy::too_many_arguments)]

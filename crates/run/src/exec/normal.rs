@@ -14,9 +14,7 @@ use super::lattice::Lattice;
 use super::outcome::LoadCurve;
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, LineLoad, LineNormal, SurfaceLoad};
-use stickslip_scene::ErrorKind;
-use stickslip_scene::SceneError;
-use stickslip_scene::{patch_bounds, NormalSweep, Patch, SurfaceBoundary};
+use stickslip_scene::{patch_bounds, ErrorKind, NormalSweep, Patch, SceneError, SurfaceBoundary};
 
 /// The normal solution of a line contact.
 #[derive(Debug, Clone, Copy)]

@@ -10,8 +10,7 @@ use stickslip_traction::closed::Lubkin;
 use super::build::{along_axis, identical_materials, indenter_material, substrate_material};
 use super::recipe::ContactNormal;
 use super::Issue;
-use stickslip_scene::ErrorKind;
-use stickslip_scene::{FieldGrid, FieldScale};
+use stickslip_scene::{ErrorKind, FieldGrid, FieldScale};
 use stickslip_scene::{
     Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate, SurfaceBoundary,
 };

@@ -3,8 +3,7 @@
 
 use super::checks::issue;
 use super::{Cost, Effect, EffectPlan, Issue, Technique, MAX_LP_ELEMENTS, SURFACE_POINTS};
-use stickslip_scene::ErrorKind;
-use stickslip_scene::{Geometry, Scene, Substrate};
+use stickslip_scene::{ErrorKind, Geometry, Scene, Substrate};
 
 /// Points along the surface, grid elements and the cost of `scene` with `effects`; a
 /// refusal when a grid needs more memory than a run may use.

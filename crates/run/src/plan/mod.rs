@@ -36,8 +36,7 @@ pub use machine::{MachineLimits, DEFAULT_TIME_LIMIT_SECONDS};
 pub use recipe::Recipe;
 
 pub(crate) use stickslip_scene::Issue;
-use stickslip_scene::Scene;
-use stickslip_scene::SceneError;
+use stickslip_scene::{Scene, SceneError};
 
 /// One of the physical effects of docs/SCENES.md.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
