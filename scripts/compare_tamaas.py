@@ -84,20 +84,16 @@ surface = true
         res = json.load(f)
     p = np.array(res["surface"]["p"], dtype=float)  # p[i][j] at (x[i], y[j])
     gap = np.array(res["surface"]["gap"], dtype=float)
-    its = None
-    resid = None
-    for note in res.get("notes", []):
-        if note.startswith("normal contact of the surface"):
-            its = int(note.split(" iterations")[0].split(";")[-1].strip())
-            parts = note.split("residuals ")[1].split(" (tolerance")[0].split(", ")
-            resid = max(float(x.split()[-1]) for x in parts)
+    normal = res["solver"]["normal"]
+    its = normal["iterations"]
+    resid = normal["residual"]
     return {
         "p": p.T,  # to [j, i] like the heights
         "gap": gap.T,
         "fraction": res["contact"]["fraction"],
         "iterations": its,
         "residual": resid,
-        "solve_seconds": res["solver"]["seconds"],
+        "solve_seconds": normal["solve_seconds"] + normal["setup_seconds"],
         "wall": wall,
     }
 

@@ -70,7 +70,9 @@ const RELATIVE: f64 = 1e-12;
 /// the reason. The key must still be present in both; the stored copy holds a placeholder.
 const EXCLUDED: &[(&str, &str)] = &[
     ("solver.seconds", "wall time of the whole run"),
-    ("solver.solve_seconds", "wall time of the grid solver"),
+    ("solver.solve_seconds", "wall time of the lattice solvers"),
+    ("solver.normal.setup_seconds", "wall time of the normal solver's set-up"),
+    ("solver.normal.solve_seconds", "wall time of the normal solver"),
 ];
 
 /// Wall times inside strings: at the path, the number that follows the text and is followed

@@ -529,6 +529,24 @@ fn solver(s: &mut String, out: &Outcome) {
     if let SurfaceOut::Grid { x, y, .. } = &out.surface {
         row(s, "grid", &format!("{} x {}", x.len(), y.len()));
     }
+    if let Some(n) = &v.normal {
+        row(
+            s,
+            "normal solver",
+            &format!(
+                "{} iterations ({} FFT products, {} preconditioner products), {} coarser \
+                 lattices first ({} iterations); residual {:.3e}; {} (set-up {})",
+                n.iterations,
+                n.products,
+                n.preconditioner_products,
+                n.levels,
+                n.coarse_iterations,
+                n.residual,
+                stickslip_run::plan::human_seconds(n.solve_seconds),
+                stickslip_run::plan::human_seconds(n.setup_seconds),
+            ),
+        );
+    }
     s.push_str("</table>\n");
 }
 

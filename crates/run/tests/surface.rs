@@ -52,6 +52,34 @@ fn a_sphere_given_as_a_surface_is_hertz() {
     assert!((out2.forces.normal - 10.0).abs() <= 1e-6 * 10.0, "force {}", out2.forces.normal);
 }
 
+/// result.json's `solver` carries the normal solver's own figures for a surface (issue 30,
+/// item 6): its record in `solver.normal`, and, with no grid solver after it, the top-level
+/// iterations, residual, elements and solve time.
+#[test]
+fn the_normal_solver_reports_its_figures() {
+    let out = go("", SPHERE, "", "normal = \"10 N\"").unwrap();
+    let n = out.solver.normal.expect("solver.normal for a surface");
+    println!("{n:?}");
+    assert!(n.iterations > 0 && n.products >= n.iterations && n.preconditioner_products > 0);
+    assert_eq!(n.levels, 2, "128 -> 64 -> 32");
+    assert!(n.coarse_iterations > 0);
+    assert!(n.residual > 0.0 && n.residual <= 1e-10);
+    assert_eq!(n.steps, 1);
+    assert!(n.solve_seconds > 0.0 && n.setup_seconds > 0.0);
+    let s = &out.solver;
+    assert_eq!((s.iterations, s.inner_iterations), (n.iterations, n.products));
+    assert_eq!(s.residual, n.residual);
+    assert_eq!(s.elements, 128 * 128);
+    assert!(s.solve_seconds >= n.solve_seconds);
+    // With a grid solver after it, the top level is the grid solver's; the record stays.
+    let out =
+        go("", SPHERE, "", "normal = \"10 N\"\ntangential = \"1 N\"\nfriction = 0.3").unwrap();
+    let n2 = out.solver.normal.expect("solver.normal for a surface");
+    assert_eq!(n2.iterations, n.iterations);
+    assert!(out.solver.elements < 128 * 128 && out.solver.inner_iterations > 0);
+    assert!(out.solver.solve_seconds > n2.solve_seconds);
+}
+
 #[test]
 fn partial_slip_on_the_computed_contact_follows_mindlin() {
     let out =

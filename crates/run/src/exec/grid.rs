@@ -77,7 +77,7 @@ pub(crate) fn solve(
             [share * total, (1.0 - share) * total]
         }
     };
-    cx.solve_seconds = sol.info.setup_seconds + sol.info.solve_seconds;
+    cx.solve_seconds += sol.info.setup_seconds + sol.info.solve_seconds;
     cx.elements = grid.len();
     cx.iterations = sol.info.iterations;
     cx.inner_iterations = sol.info.inner_iterations;

@@ -65,6 +65,8 @@ pub(crate) struct Ctx<'a> {
     pub sampling: Option<f64>,
     /// The coupled normal-tangential solve's record, when it ran.
     pub coupling: Option<outcome::CouplingOut>,
+    /// The normal solver of a surface, when it ran.
+    pub normal: Option<outcome::NormalSolverOut>,
 }
 
 impl Ctx<'_> {
@@ -179,6 +181,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         solve_seconds: 0.0,
         sampling: None,
         coupling: None,
+        normal: None,
     };
     let parts = match &plan.recipe {
         Recipe::Line(r) => line(r, &mut cx),
@@ -221,6 +224,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
             solve_seconds: cx.solve_seconds,
             seconds: t0.elapsed().as_secs_f64(),
             coupling: cx.coupling,
+            normal: cx.normal,
         },
         rolling: parts.rolling,
         cycle: parts.cycle,

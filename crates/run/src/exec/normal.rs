@@ -11,7 +11,7 @@ use stickslip_normal::{Boundary, NormalLoad as TNormalLoad, NormalProblem};
 use stickslip_traction::Tolerance;
 
 use super::lattice::Lattice;
-use super::outcome::LoadCurve;
+use super::outcome::{LoadCurve, NormalSolverOut};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, LineLoad, LineNormal, SurfaceLoad};
 use stickslip_scene::{patch_bounds, ErrorKind, NormalSweep, Patch, SceneError, SurfaceBoundary};
@@ -248,9 +248,11 @@ fn surface_contact(
     });
     let mut warm: Option<Vec<f64>> = None;
     let mut sol = None;
+    let mut seconds = 0.0;
     for (i, step) in steps.iter().enumerate() {
         cx.progress("normal contact", i, steps.len());
         let s = problem.solve_with(&op, *step, warm.as_deref()).map_err(surface_err)?;
+        seconds += s.info.solve_seconds;
         if let Some(c) = curve.as_mut() {
             c.normal.push(s.force);
             c.approach.push(s.approach);
@@ -264,7 +266,14 @@ fn surface_contact(
     }
     cx.progress("normal contact", steps.len(), steps.len());
     let Some(sol) = sol else { return Err(solver_err("normal-contact solver", "no load step")) };
-    surface_solution(s, &sol, tolerance, curve, cx)
+    let out = surface_solution(s, &sol, tolerance, curve, cx)?;
+    // The record of the last step, with the time and the count of all of them.
+    if let Some(n) = cx.normal.as_mut() {
+        cx.solve_seconds += seconds - n.solve_seconds;
+        n.solve_seconds = seconds;
+        n.steps = steps.len();
+    }
+    Ok(out)
 }
 
 /// The initial gap of a surface on its lattice (profile minus roughness at the cell centres,
@@ -308,8 +317,37 @@ pub(crate) fn surface_solution(
         .hint("raise load.approach above the smallest initial gap, or give load.normal"));
     }
     cx.ev.normal_contact += (nx * ny) as u64;
+    let info = &sol.info;
+    cx.normal = Some(NormalSolverOut {
+        iterations: info.iterations,
+        levels: info.levels,
+        coarse_iterations: info.coarse_iterations,
+        products: info.products,
+        preconditioner_products: info.preconditioner_products,
+        gap_residual: info.gap_residual,
+        complementarity_residual: info.complementarity_residual,
+        force_residual: info.force_residual,
+        residual: info.residual,
+        steps: 1,
+        setup_seconds: info.setup_seconds,
+        solve_seconds: info.solve_seconds,
+    });
+    // The solver's figures until a grid solver (a later stage) gives its own.
+    cx.iterations = info.iterations;
+    cx.inner_iterations = info.products;
+    cx.residual = info.residual;
+    cx.elements = nx * ny;
+    cx.solve_seconds += info.setup_seconds + info.solve_seconds;
+    let start = match info.levels {
+        0 => "from a cold or warm start".to_string(),
+        l => format!(
+            "nested start from {l} coarser lattice{} ({} iterations)",
+            if l == 1 { "" } else { "s" },
+            info.coarse_iterations
+        ),
+    };
     cx.notes.push(format!(
-        "normal contact of the surface: {} x {} cells, {} in contact ({:.4} of the lattice{}); {} iterations, {} FFT products; residuals gap {:.2e}, complementarity {:.2e}, force {:.2e} (tolerance {:.1e})",
+        "normal contact of the surface: {} x {} cells, {} in contact ({:.4} of the lattice{}); {} iterations ({} FFT products, {} preconditioner products), {}; residuals gap {:.2e}, complementarity {:.2e}, force {:.2e} (tolerance {:.1e})",
         nx,
         ny,
         sol.contact_cells,
@@ -317,6 +355,8 @@ pub(crate) fn surface_solution(
         if sol.touches_boundary { "; the contact reaches the lattice edge, which truncates the surface" } else { "" },
         sol.info.iterations,
         sol.info.products,
+        sol.info.preconditioner_products,
+        start,
         sol.info.gap_residual,
         sol.info.complementarity_residual,
         sol.info.force_residual,

@@ -359,25 +359,62 @@ pub struct FieldOut {
 pub struct SolverOut {
     /// The techniques used (per effect), joined.
     pub method: String,
-    /// Iterations (LP pivots, fast-solver Newton steps, root-solver iterations), 0 for
-    /// closed forms.
+    /// Iterations of the last iterative solver that ran (LP pivots, fast-solver Newton
+    /// steps, root-solver iterations; a surface without a grid solver: the normal solver's
+    /// conjugate-gradient iterations on the finest lattice), 0 for closed forms.
     pub iterations: usize,
     /// Inner iterations: conjugate-gradient iterations summed over the fast solver's Newton
-    /// steps; 0 otherwise.
+    /// steps (the normal solver alone: its FFT products on the finest lattice); 0 otherwise.
     pub inner_iterations: usize,
     /// Residual of the last iterative solve, 0 for closed forms (the fast solver: relative
     /// complementarity residual $\lVert\mathbf r\rVert/\lVert\mathbf q\rVert$; the LP:
-    /// the load in excess of the friction capacity).
+    /// the load in excess of the friction capacity; the normal solver: the largest of its
+    /// certified residuals).
     pub residual: f64,
-    /// Elements of the grid solver (LP or fast), 0 when none ran.
+    /// Elements of the last lattice solver (the grid solver's elements; the normal solver
+    /// alone: its lattice cells), 0 when none ran.
     pub elements: usize,
-    /// Wall time of the grid solver including its set-up (s), 0 when none ran.
+    /// Wall time of the lattice solvers including their set-up (s): the normal solver of a
+    /// surface (all its load steps) plus the grid solver; 0 when none ran.
     pub solve_seconds: f64,
     /// Wall time of the run (s).
     pub seconds: f64,
     /// The normal-tangential coupling of dissimilar bodies, when it was solved.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub coupling: Option<CouplingOut>,
+    /// The normal solver of a surface, when it ran.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub normal: Option<NormalSolverOut>,
+}
+
+/// `solver.normal` in result.json: the normal-contact solver of a surface (its last load
+/// step; the times cover all steps).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct NormalSolverOut {
+    /// Conjugate-gradient iterations on the surface's lattice.
+    pub iterations: usize,
+    /// Coarser lattices solved first (the nested start; 0 for a cold or warm start).
+    pub levels: usize,
+    /// Iterations on the coarser lattices, summed.
+    pub coarse_iterations: usize,
+    /// FFT products with the influence operator on the surface's lattice.
+    pub products: usize,
+    /// Applications of the spectral preconditioner on the surface's lattice.
+    pub preconditioner_products: usize,
+    /// The certified residuals: gap, complementarity, force, and the largest.
+    pub gap_residual: f64,
+    /// See `gap_residual`.
+    pub complementarity_residual: f64,
+    /// See `gap_residual`.
+    pub force_residual: f64,
+    /// See `gap_residual`.
+    pub residual: f64,
+    /// Load steps solved (a load sweep; 1 otherwise).
+    pub steps: usize,
+    /// Wall time of planning the operator (s).
+    pub setup_seconds: f64,
+    /// Wall time of the iterations of all load steps, coarser lattices included (s).
+    pub solve_seconds: f64,
 }
 
 /// `solver.coupling` in result.json: the alternating normal-tangential solve of dissimilar

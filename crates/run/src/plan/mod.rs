@@ -282,7 +282,7 @@ impl Technique {
             Technique::EllipseGiven => "Hertz pressure on the given semi-axes, p0 = 3P/(2 pi a b)",
             Technique::PatchPressure => "uniform pressure on each patch, as given",
             Technique::SurfaceContact => {
-                "normal contact of the surface on its lattice, constrained conjugate gradients with FFT products (Polonsky-Keer), numerical"
+                "normal contact of the surface on its lattice, constrained conjugate gradients with FFT products (Polonsky-Keer), spectral preconditioner, nested start from coarser lattices, numerical"
             }
             Technique::Sliding => "full sliding, q = f p",
             Technique::Cattaneo2d => "2D Cattaneo-Mindlin, c/a = sqrt(1 - Q/fP) (FORMULAS.md C)",
