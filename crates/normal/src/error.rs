@@ -68,6 +68,19 @@ pub enum Error {
         /// The minimum accepted.
         minimum: usize,
     },
+    /// The solve would need more memory than allowed
+    /// ([`crate::NormalProblem::with_memory_limit`]); refused before anything is planned.
+    #[error("a lattice of {cells} cells needs about {needed} bytes to solve, more than the limit of {limit} bytes: use fewer cells (about {fits} fit) or allow more memory")]
+    MemoryExceeded {
+        /// Cells of the lattice.
+        cells: usize,
+        /// Bytes the solve would need ([`crate::NormalProblem::memory_bytes`]).
+        needed: u64,
+        /// The limit given.
+        limit: u64,
+        /// About how many cells fit in the limit (at the same boundary).
+        fits: usize,
+    },
     /// An error of the lattice (grid construction, operators).
     #[error(transparent)]
     Lattice(#[from] stickslip_lattice::Error),

@@ -235,6 +235,7 @@ pub struct NormalProblem<'a> {
     min_contact_cells: usize,
     nesting: Nesting,
     preconditioner: Preconditioner,
+    memory_limit: Option<u64>,
 }
 
 /// Termination information of a normal solve.
@@ -410,6 +411,7 @@ impl<'a> NormalProblem<'a> {
             min_contact_cells: DEFAULT_MIN_CONTACT_CELLS,
             nesting: Nesting::Nested { min_cells: NEST_MIN_CELLS },
             preconditioner: Preconditioner::Spectral,
+            memory_limit: None,
         })
     }
 
@@ -461,6 +463,60 @@ impl<'a> NormalProblem<'a> {
         self
     }
 
+    /// Refuse to solve ([`Error::MemoryExceeded`], before anything is planned) when the solve
+    /// would need more than `bytes` of working memory ([`NormalProblem::memory_bytes`]).
+    #[must_use]
+    pub fn with_memory_limit(mut self, bytes: u64) -> Self {
+        self.memory_limit = Some(bytes);
+        self
+    }
+
+    /// The working memory of a solve on an `nx` x `ny` lattice (bytes), beyond the caller's
+    /// initial gap: the operator (the kernel's half spectrum, the column $Ke_0$, the
+    /// preconditioner's spectrum in single precision), the row spectra of the two transforms,
+    /// the five lattice vectors of the iteration and the previous gap in single precision,
+    /// and the contact flags of the result. The coarser levels of a nested start need about
+    /// a quarter of it and are released before the finest lattice's vectors exist; the free
+    /// kernel's set-up needs less than the iteration. In doubles per cell: about 8.5
+    /// periodic and 10.3 free (issue 30: at most 13 with the gap; measured peak resident
+    /// memory of the whole process in `docs/peers.md`).
+    #[must_use]
+    pub fn memory_bytes(nx: usize, ny: usize, boundary: Boundary) -> u64 {
+        let n = (nx * ny) as u64;
+        let (mx, my, px, py) = match boundary {
+            Boundary::Periodic => (nx, ny, nx, ny),
+            Boundary::Free => (
+                stickslip_lattice::fast_size(2 * nx - 1),
+                stickslip_lattice::fast_size(2 * ny - 1),
+                stickslip_lattice::fast_size(nx),
+                stickslip_lattice::fast_size(ny),
+            ),
+        };
+        let half = |m: usize| (m / 2 + 1) as u64;
+        let operator = 8 * half(mx) * half(my) + 8 * n + 4 * half(px) * half(py);
+        let scratch = 16 * ny as u64 * half(mx) + 8 * ny as u64 * half(px);
+        let iteration = 5 * 8 * n + 4 * n;
+        operator + scratch + iteration + n
+    }
+
+    /// [`NormalProblem::memory_bytes`] of this problem's lattice.
+    #[must_use]
+    pub fn memory_needed(&self) -> u64 {
+        Self::memory_bytes(self.nx, self.ny, self.boundary)
+    }
+
+    /// [`Error::MemoryExceeded`] when the solve needs more than the limit.
+    fn check_memory(&self) -> Result<()> {
+        let Some(limit) = self.memory_limit else { return Ok(()) };
+        let needed = self.memory_needed();
+        if needed <= limit {
+            return Ok(());
+        }
+        let cells = self.nx * self.ny;
+        let fits = (cells as f64 * limit as f64 / needed as f64) as usize;
+        Err(Error::MemoryExceeded { cells, needed, limit, fits })
+    }
+
     /// The lattice $(n_x, n_y)$.
     #[must_use]
     pub fn lattice(&self) -> (usize, usize) {
@@ -499,7 +555,8 @@ impl<'a> NormalProblem<'a> {
     /// and $> 0$, a non-finite approach, (periodic) an approach at or above the mean
     /// initial gap, or an operator planned for other cells, boundary or bodies; [`Error::LengthMismatch`] for an operator or warm
     /// start of another lattice; [`Error::NotConverged`] with the residual reached;
-    /// [`Error::UnresolvedContact`] for a contact on fewer cells than the minimum.
+    /// [`Error::UnresolvedContact`] for a contact on fewer cells than the minimum;
+    /// [`Error::MemoryExceeded`] (before anything else runs) beyond a memory limit.
     pub fn solve_with(
         &self,
         op: &NormalOperator,
@@ -516,7 +573,7 @@ impl<'a> NormalProblem<'a> {
                     got: w.len(),
                 });
             }
-            return self.run(op, load, tol, force, Some(w)).map(|(s, _)| s);
+            return self.run(op, load, tol, force, Start::Borrowed(w)).map(|(s, _)| s);
         }
         let t0 = Instant::now();
         let coarse = self.coarse_start(load);
@@ -524,9 +581,10 @@ impl<'a> NormalProblem<'a> {
         self.run_from(op, load, tol, force, coarse, coarse_seconds)
     }
 
-    /// The tolerance and the prescribed force of `load`, checked.
+    /// The tolerance and the prescribed force of `load`, checked, and the memory.
     fn check_load(&self, load: NormalLoad) -> Result<(f64, Option<f64>)> {
         let tol = tolerance_in(SOLVER_NAME, self.tolerance, Self::TOLERANCE_RANGE)?;
+        self.check_memory()?;
         let force = match load {
             NormalLoad::Force(p) => Some(positive("normal force", p)?),
             NormalLoad::Approach(d) => {
@@ -592,14 +650,14 @@ impl<'a> NormalProblem<'a> {
     ) -> Result<NormalSolution> {
         let t0 = Instant::now();
         let (mut s, levels) = match coarse {
-            Some(c) => match self.run(op, load, tol, force, Some(&c.pressure)) {
+            Some(c) => match self.run(op, load, tol, force, Start::Owned(c.pressure)) {
                 Ok((s, _)) => (s, c.levels),
                 Err(Error::NotConverged { .. }) => {
-                    (self.run(op, load, tol, force, None)?.0, vec![])
+                    (self.run(op, load, tol, force, Start::Cold)?.0, vec![])
                 }
                 Err(e) => return Err(e),
             },
-            None => (self.run(op, load, tol, force, None)?.0, vec![]),
+            None => (self.run(op, load, tol, force, Start::Cold)?.0, vec![]),
         };
         s.info.levels = levels.len();
         s.info.coarse_iterations = levels.iter().map(|l| l.iterations).sum();
@@ -653,6 +711,7 @@ impl<'a> NormalProblem<'a> {
             min_contact_cells: 1,
             nesting: self.nesting,
             preconditioner: self.preconditioner,
+            memory_limit: None,
         };
         let s = coarse.solve(load).ok()?;
         drop(gap);
@@ -678,16 +737,17 @@ impl<'a> NormalProblem<'a> {
         Some(Coarse { pressure, levels })
     }
 
-    /// The iteration of the module docs on this lattice from `warm` (or a cold start); also
-    /// returns whether it started warm.
+    /// The iteration of the module docs on this lattice from `start`; also returns whether
+    /// it started warm.
     fn run(
         &self,
         op: &NormalOperator,
         load: NormalLoad,
         tol: f64,
         force: Option<f64>,
-        warm: Option<&[f64]>,
+        start: Start<'_>,
     ) -> Result<(NormalSolution, bool)> {
+        let warm = !matches!(start, Start::Cold);
         let (nx, n) = (self.nx, self.nx * self.ny);
         let t0 = Instant::now();
         let area = self.hx * self.hy;
@@ -705,15 +765,18 @@ impl<'a> NormalProblem<'a> {
             }
         }
 
-        let mut p = vec![0.0; n];
-        match (warm, load) {
-            (Some(w), _) => p.par_iter_mut().zip(w).for_each(|(p, w)| *p = w.max(0.0)),
-            (None, NormalLoad::Approach(d)) => {
-                let k0 = op.self_term();
-                p.par_iter_mut().zip(g0).for_each(|(p, g)| *p = ((d - g) / k0).max(0.0));
+        let mut p = match (start, load) {
+            (Start::Owned(mut w), _) => {
+                w.par_iter_mut().for_each(|p| *p = p.max(0.0));
+                w
             }
-            (None, NormalLoad::Force(_)) => p.fill(1.0),
-        }
+            (Start::Borrowed(w), _) => w.par_iter().map(|w| w.max(0.0)).collect(),
+            (Start::Cold, NormalLoad::Approach(d)) => {
+                let k0 = op.self_term();
+                g0.par_iter().map(|g| ((d - g) / k0).max(0.0)).collect()
+            }
+            (Start::Cold, NormalLoad::Force(_)) => vec![1.0; n],
+        };
         if let Some(pf) = force {
             if !rescale(&mut p, pf / area) {
                 // A zero warm start: begin uniform.
@@ -1061,7 +1124,7 @@ impl<'a> NormalProblem<'a> {
                 minimum: self.min_contact_cells,
             });
         }
-        Ok((s, warm.is_some()))
+        Ok((s, warm))
     }
 
     /// The termination information of a solve on this lattice; `residuals` = gap,
@@ -1134,6 +1197,14 @@ impl<'a> NormalProblem<'a> {
             levels: Vec::new(),
         }
     }
+}
+
+/// Where [`NormalProblem::run`] starts: cold, or from a pressure (borrowed: a caller's warm
+/// start, copied; owned: the nested start's, used in place).
+enum Start<'b> {
+    Cold,
+    Borrowed(&'b [f64]),
+    Owned(Vec<f64>),
 }
 
 /// A nested start: the coarse levels' pressure on this lattice, and the levels.

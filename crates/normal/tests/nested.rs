@@ -430,3 +430,34 @@ fn thread_count_and_warm_start() {
     assert_eq!(warm.info.levels, 0);
     assert!(warm.info.iterations <= 2);
 }
+
+/// A lattice whose solve would need more memory than allowed is refused before anything is
+/// planned, with the bytes it needs and the cells that would fit.
+#[test]
+fn memory_limit_refuses_before_solving() {
+    let n = 256;
+    let g0 = rippled_sphere(n, n, 1e-6, 1e-3, 0.0);
+    let needed = NormalProblem::memory_bytes(n, n, Boundary::Free);
+    let per_cell = needed as f64 / (8.0 * (n * n) as f64);
+    println!("free {n}^2: {needed} bytes, {per_cell:.2} doubles per cell");
+    assert!(per_cell < 12.0, "the solve's own memory must leave room for the gap within 13");
+    let pb =
+        NormalProblem::new(n, n, (1e-6, 1e-6), &g0, [steel(), Material::rigid()], Boundary::Free)
+            .unwrap()
+            .with_memory_limit(needed / 2);
+    match pb.solve(NormalLoad::Force(1.0)) {
+        Err(Error::MemoryExceeded { cells, needed: got, limit, fits }) => {
+            assert_eq!((cells, got, limit), (n * n, needed, needed / 2));
+            assert!(fits < cells / 2 + 1 && fits > cells / 3, "fits {fits}");
+        }
+        Ok(_) => panic!("a solve beyond the memory limit ran"),
+        Err(e) => panic!("expected MemoryExceeded, got {e}"),
+    }
+    // At the limit it runs.
+    let s = pb.with_memory_limit(needed).solve(NormalLoad::Force(1.0)).unwrap();
+    assert!(s.contact_cells > 0);
+    let periodic =
+        NormalProblem::memory_bytes(n, n, Boundary::Periodic) as f64 / (8.0 * (n * n) as f64);
+    println!("periodic {n}^2: {periodic:.2} doubles per cell");
+    assert!(periodic < per_cell);
+}

@@ -36,6 +36,8 @@ use std::fmt;
 use std::hash::Hasher as _;
 use std::path::PathBuf;
 
+use rayon::prelude::*;
+
 pub use table::{format_f64, Cell, Kind, Table, TableError};
 pub use vary::{Vary, VaryError, VaryValue};
 
@@ -329,9 +331,40 @@ impl Sweep {
         row
     }
 
-    /// Run the points of `shard` one after the other; `done` is called after each point
-    /// (for a progress bar).
-    pub fn run(&self, shard: Shard, time_limit: f64, mut done: impl FnMut(usize)) -> Table {
+    /// Run the points of `shard` in parallel, as many at a time as there are threads (all
+    /// cores by default) and as the memory available holds (each point's planned memory,
+    /// the largest of them, against what the machine has); `done` is called after each
+    /// point (for a progress bar), from the thread that ran it. Each point is still one
+    /// independent, audited run, and every solver gives the same bits for any number of
+    /// threads, so the table is [`Sweep::run_serial`]'s, in the same order.
+    pub fn run(&self, shard: Shard, time_limit: f64, done: impl Fn(usize) + Sync) -> Table {
+        let points: Vec<usize> = shard.points(self.len()).collect();
+        let at_once = self.concurrency(&points);
+        let run = |points: &[usize]| -> Vec<Vec<Cell>> {
+            points
+                .par_iter()
+                .map(|&i| {
+                    let r = self.run_point(i, time_limit);
+                    done(i);
+                    r
+                })
+                .collect()
+        };
+        let rows = if at_once >= rayon::current_num_threads() {
+            run(&points)
+        } else if at_once <= 1 {
+            return self.run_serial(shard, time_limit, done);
+        } else {
+            match rayon::ThreadPoolBuilder::new().num_threads(at_once).build() {
+                Ok(pool) => pool.install(|| run(&points)),
+                Err(_) => return self.run_serial(shard, time_limit, done),
+            }
+        };
+        Table { columns: self.columns(), rows }
+    }
+
+    /// Run the points of `shard` one after the other; `done` is called after each point.
+    pub fn run_serial(&self, shard: Shard, time_limit: f64, done: impl Fn(usize)) -> Table {
         let rows = shard
             .points(self.len())
             .map(|i| {
@@ -341,6 +374,29 @@ impl Sweep {
             })
             .collect();
         Table { columns: self.columns(), rows }
+    }
+
+    /// How many of `points` may run at once: the threads, fewer when the largest planned
+    /// memory of a point times the threads exceeds the memory available (unknown memory:
+    /// the threads). A point that cannot be read or planned costs nothing (it fails at once).
+    fn concurrency(&self, points: &[usize]) -> usize {
+        let threads = rayon::current_num_threads().min(points.len()).max(1);
+        let Some(avail) = MachineLimits::detect(f64::INFINITY).memory_bytes else {
+            return threads;
+        };
+        let largest = points
+            .par_iter()
+            .filter_map(|&i| {
+                let text = self.point_text(i).ok()?;
+                let scene = read_scene(&text, self.file.clone()).ok()?;
+                Some(Plan::new(&scene).ok()?.cost.memory_bytes)
+            })
+            .max()
+            .unwrap_or(0);
+        match avail.checked_div(largest) {
+            Some(fit) => threads.min(fit as usize).max(1),
+            None => threads,
+        }
     }
 }
 

@@ -201,3 +201,35 @@ fn column_kinds_survive_the_csv() {
     std::fs::remove_file(&p).unwrap();
     assert_eq!(back, t);
 }
+
+/// Points run in parallel (issue 30, item 5) give the serial table, row for row and bit for
+/// bit: a surface (the nested normal solver, then the fast partial-slip solver) over loads
+/// and friction coefficients, with one failing point among them, on two and three threads.
+#[test]
+fn parallel_points_give_the_serial_table() {
+    let scene = include_str!("../../../scenes/sphere_as_surface.toml");
+    let vary = [
+        Vary::parse("load.normal=5 N:20 N:3").unwrap(),
+        Vary::parse("load.friction=0.05,0.2").unwrap(),
+    ];
+    let s = Sweep::new(scene, Some("sphere_as_surface.toml".into()), &vary).unwrap();
+    let serial = s.run_serial(Shard::ALL, 600.0, |_| {});
+    assert_eq!(serial.rows.len(), 6);
+    for threads in [2, 3] {
+        let done = std::sync::atomic::AtomicUsize::new(0);
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        let parallel = pool.install(|| {
+            s.run(Shard::ALL, 600.0, |_| {
+                done.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            })
+        });
+        assert_eq!(done.into_inner(), 6, "progress once per point");
+        assert_eq!(parallel.columns, serial.columns);
+        for (a, b) in parallel.rows.iter().zip(&serial.rows) {
+            assert_eq!(a, b, "{threads} threads");
+        }
+    }
+    // One point (T = 1 N > f P at f = 0.05, P = 5 N) fails and is a row with its reason.
+    let status = serial.column("status").unwrap();
+    assert!(serial.rows.iter().any(|r| r[status] == Cell::Text(Some("failed".into()))));
+}

@@ -6,8 +6,8 @@ use crate::error::{Error, Result};
 use crate::operator::fast_size;
 use rayon::prelude::*;
 use realfft::num_complex::Complex;
-use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
-use rustfft::{Fft, FftPlanner};
+use realfft::{ComplexToReal, RealToComplex};
+use rustfft::Fft;
 use std::f64::consts::PI;
 use std::sync::Arc;
 use stickslip_halfspace::rect_stress::{
@@ -208,8 +208,6 @@ impl FieldOperator {
             Boundary::Free => (fast_size(2 * lattice.nx - 1), fast_size(2 * lattice.ny - 1)),
             Boundary::Periodic => (lattice.nx, lattice.ny),
         };
-        let mut rplan = RealFftPlanner::<f64>::new();
-        let mut cplan = FftPlanner::<f64>::new();
         Ok(Self {
             lattice,
             nu,
@@ -217,10 +215,10 @@ impl FieldOperator {
             mx,
             my,
             mxh: mx / 2 + 1,
-            r2c: rplan.plan_fft_forward(mx),
-            c2r: rplan.plan_fft_inverse(mx),
-            col_fwd: cplan.plan_fft_forward(my),
-            col_inv: cplan.plan_fft_inverse(my),
+            r2c: crate::operator::plans::r2c(mx),
+            c2r: crate::operator::plans::c2r(mx),
+            col_fwd: crate::operator::plans::forward(my),
+            col_inv: crate::operator::plans::inverse(my),
         })
     }
 

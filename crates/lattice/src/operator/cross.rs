@@ -5,7 +5,7 @@
 
 use super::{fast_size, signed};
 use rustfft::num_complex::Complex;
-use rustfft::{Fft, FftPlanner};
+use rustfft::Fft;
 use std::sync::Arc;
 use stickslip_halfspace::rectangle::{
     pressure_displacement, shear_x_displacement, shear_y_displacement, Compliance, Rect,
@@ -41,9 +41,8 @@ impl CrossOperator {
     pub fn new(nx: usize, ny: usize, cell: (f64, f64), c: &Compliance) -> Self {
         let (hx, hy) = cell;
         let (mx, my) = (fast_size(2 * nx), fast_size(2 * ny));
-        let mut planner = FftPlanner::new();
-        let row = [planner.plan_fft_forward(mx), planner.plan_fft_inverse(mx)];
-        let col = [planner.plan_fft_forward(my), planner.plan_fft_inverse(my)];
+        let row = [super::plans::forward(mx), super::plans::inverse(mx)];
+        let col = [super::plans::forward(my), super::plans::inverse(my)];
         let rect = Rect { x1: -0.5 * hx, x2: 0.5 * hx, y1: -0.5 * hy, y2: 0.5 * hy };
         let mut lay = [(); 4].map(|()| vec![C64::new(0.0, 0.0); mx * my]);
         let (ix, iy) = (nx as isize, ny as isize);
@@ -83,9 +82,8 @@ impl CrossOperator {
     #[must_use]
     pub fn periodic(nx: usize, ny: usize, cell: (f64, f64), c: &Compliance) -> Self {
         let (mx, my) = (nx, ny);
-        let mut planner = FftPlanner::new();
-        let row = [planner.plan_fft_forward(mx), planner.plan_fft_inverse(mx)];
-        let col = [planner.plan_fft_forward(my), planner.plan_fft_inverse(my)];
+        let row = [super::plans::forward(mx), super::plans::inverse(mx)];
+        let col = [super::plans::forward(my), super::plans::inverse(my)];
         let (lx, ly) = (nx as f64 * cell.0, ny as f64 * cell.1);
         let two_pi = 2.0 * std::f64::consts::PI;
         let scale = 1.0 / (mx * my) as f64;

@@ -19,12 +19,13 @@ use crate::grid::ContactGrid;
 use crate::influence::{tensor, Compliance, InfluenceModel};
 use rayon::prelude::*;
 use realfft::num_complex::Complex;
-use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
-use rustfft::{Fft, FftPlanner};
+use realfft::{ComplexToReal, RealToComplex};
+use rustfft::Fft;
 use std::sync::Arc;
 
 mod cross;
 mod normal;
+pub(crate) mod plans;
 mod scalar;
 
 pub use cross::CrossOperator;
@@ -122,8 +123,6 @@ impl TensorConvolution {
         let mx = fast_size(2 * nx - 1);
         let my = fast_size(2 * ny - 1);
         let mxh = mx / 2 + 1;
-        let mut rplan = RealFftPlanner::<f64>::new();
-        let mut cplan = FftPlanner::<f64>::new();
         let (row_items, row_ptr) = rows_of(&cell, nx, ny);
         let mut op = Self {
             n,
@@ -139,10 +138,10 @@ impl TensorConvolution {
             kxy: Vec::new(),
             kyy: Vec::new(),
             self_term: [0.0; 3],
-            r2c: rplan.plan_fft_forward(mx),
-            c2r: rplan.plan_fft_inverse(mx),
-            col_fwd: cplan.plan_fft_forward(my),
-            col_inv: cplan.plan_fft_inverse(my),
+            r2c: plans::r2c(mx),
+            c2r: plans::c2r(mx),
+            col_fwd: plans::forward(my),
+            col_inv: plans::inverse(my),
         };
 
         // Kernel tensors for offsets (di, dj) >= 0, from a two-element probe grid
@@ -648,8 +647,6 @@ fn rows_of(cell: &[usize], nx: usize, ny: usize) -> (Vec<(usize, usize)>, Vec<us
 impl TensorConvolution {
     /// FFT plans for an `nx` x `ny` lattice on an `mx` x `my` torus (no elements, no kernel).
     fn plan(nx: usize, ny: usize, mx: usize, my: usize) -> Self {
-        let mut rplan = RealFftPlanner::<f64>::new();
-        let mut cplan = FftPlanner::<f64>::new();
         Self {
             n: nx * ny,
             nx,
@@ -664,10 +661,10 @@ impl TensorConvolution {
             kxy: Vec::new(),
             kyy: Vec::new(),
             self_term: [0.0; 3],
-            r2c: rplan.plan_fft_forward(mx),
-            c2r: rplan.plan_fft_inverse(mx),
-            col_fwd: cplan.plan_fft_forward(my),
-            col_inv: cplan.plan_fft_inverse(my),
+            r2c: plans::r2c(mx),
+            c2r: plans::c2r(mx),
+            col_fwd: plans::forward(my),
+            col_inv: plans::inverse(my),
         }
     }
 }

@@ -11,8 +11,8 @@
 
 use rayon::prelude::*;
 use realfft::num_complex::Complex;
-use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
-use rustfft::{Fft, FftNum, FftPlanner};
+use realfft::{ComplexToReal, RealToComplex};
+use rustfft::{Fft, FftNum};
 use std::sync::Arc;
 
 /// Columns (of the column pass) or rows (of the inverse row pass) handled together by one
@@ -76,8 +76,6 @@ impl<T: Precision> ScalarConvolution<T> {
     /// Plans for an `nx` x `ny` lattice on an `mx` x `my` torus (no kernel yet).
     fn plan(nx: usize, ny: usize, mx: usize, my: usize) -> Self {
         assert!(nx >= 1 && ny >= 1 && mx >= nx && my >= ny, "torus smaller than the lattice");
-        let mut rplan = RealFftPlanner::<T>::new();
-        let mut cplan = FftPlanner::<T>::new();
         Self {
             nx,
             ny,
@@ -86,10 +84,10 @@ impl<T: Precision> ScalarConvolution<T> {
             mxh: mx / 2 + 1,
             myh: my / 2 + 1,
             spectrum: Vec::new(),
-            r2c: rplan.plan_fft_forward(mx),
-            c2r: rplan.plan_fft_inverse(mx),
-            col_fwd: cplan.plan_fft_forward(my),
-            col_inv: cplan.plan_fft_inverse(my),
+            r2c: super::plans::r2c(mx),
+            c2r: super::plans::c2r(mx),
+            col_fwd: super::plans::forward(my),
+            col_inv: super::plans::inverse(my),
         }
     }
 
@@ -107,8 +105,7 @@ impl<T: Precision> ScalarConvolution<T> {
         assert_eq!(quad.len(), nx * ny, "kernel quadrant length");
         let mut op = Self::plan(nx, ny, super::fast_size(2 * nx - 1), super::fast_size(2 * ny - 1));
         let (mx, my, mxh, myh) = (op.mx, op.my, op.mxh, op.myh);
-        let mut planner = RealFftPlanner::<f64>::new();
-        let (row_r2c, col_r2c) = (planner.plan_fft_forward(mx), planner.plan_fft_forward(my));
+        let (row_r2c, col_r2c) = (super::plans::r2c::<f64>(mx), super::plans::r2c::<f64>(my));
         // Rows: the transform of an even real sequence is real.
         let mut rows = vec![0.0; ny * mxh];
         rows.par_chunks_mut(mxh).enumerate().for_each_init(

@@ -110,7 +110,13 @@ pub(crate) fn estimate(
         // 256^2, 2.5 s at 512^2, 19 s at 1024^2, about 17 doubles per cell.
         let n = (s.cells[0] * s.cells[1]) as f64;
         secs += 0.34 * (n / 65536.0).powf(1.45);
-        mem += (n * 17.0 * 8.0) as u64;
+        // The solver's own estimate of its working memory, and the initial gap.
+        let boundary = match s.boundary {
+            stickslip_scene::SurfaceBoundary::Free => stickslip_normal::Boundary::Free,
+            stickslip_scene::SurfaceBoundary::Periodic => stickslip_normal::Boundary::Periodic,
+        };
+        mem += stickslip_normal::NormalProblem::memory_bytes(s.cells[0], s.cells[1], boundary)
+            + (n * 8.0) as u64;
         evals += n as u64;
     }
     if grid_elements > 0 {
