@@ -809,43 +809,39 @@ impl<'a> NormalProblem<'a> {
         let mut conjugate = false;
         let (mut iterations, mut products, mut pre) = (0, 0, 0);
         // `u = Kp` is updated from the products of the step (one convolution per iteration
-        // when few cells are clipped or re-enter); `fresh` says it is a full product of the
+        // when few cells are clipped or re-enter); `stale` says it must be recomputed by a
+        // full product before the next pass, `exact` that it is a full product of the
         // current p, which the certified stop requires.
-        let mut fresh = false;
-        // Force control: the rescaling factor of p (and of an incrementally updated u) still
-        // to apply, fused into the next pass over the lattice.
-        let mut pending = 1.0;
+        let (mut stale, mut exact) = (true, false);
+        // Force control: the factor that rescales p (and u) to the load. The arrays hold
+        // p / scale and u / scale until the step writes them anyway.
+        let mut scale = 1.0;
         let mut delta;
         let mut res;
         let sum_target = force.map(|f| f / area);
         loop {
-            if !fresh {
-                if pending != 1.0 {
-                    let f = pending;
+            if stale {
+                if scale != 1.0 {
+                    let f = scale;
                     p.par_iter_mut().for_each(|p| *p *= f);
-                    pending = 1.0;
+                    scale = 1.0;
                 }
                 op.apply(&p, &mut u, &mut scratch);
                 products += 1;
-                fresh = true;
+                (stale, exact) = (false, true);
             }
-            // The pending rescaling, the gap without the approach, and what the approach and
-            // the residuals need, in one pass.
-            let f = pending;
-            pending = 1.0;
+            // The gap without the approach, and what the approach and the residuals need, in
+            // one pass.
+            let f = scale;
             let a = in_order(
                 g.par_chunks_mut(BLOCK)
-                    .zip(u.par_chunks_mut(BLOCK))
-                    .zip(g0.par_chunks(BLOCK).zip(p.par_chunks_mut(BLOCK)))
+                    .zip(u.par_chunks(BLOCK))
+                    .zip(g0.par_chunks(BLOCK).zip(p.par_chunks(BLOCK)))
                     .map(|((g, u), (g0, p))| {
                         let mut a = GapSums::EMPTY;
-                        for (g, (u, (g0, p))) in
-                            g.iter_mut().zip(u.iter_mut().zip(g0.iter().zip(p)))
-                        {
-                            *p *= f;
-                            *u *= f;
-                            *g = *u + g0;
-                            a.add(*g, *p);
+                        for (g, (u, (g0, p))) in g.iter_mut().zip(u.iter().zip(g0.iter().zip(p))) {
+                            *g = f * u + g0;
+                            a.add(*g, f * p);
                         }
                         a
                     }),
@@ -860,10 +856,11 @@ impl<'a> NormalProblem<'a> {
             // The complementarity residual is at most the gap residual (module docs), so the
             // gap and force residuals decide the stop; it is computed at the end.
             if res.0.max(res.1) <= tol {
-                if fresh {
+                if exact {
                     break;
                 }
                 // Certify with a full product.
+                stale = true;
                 continue;
             }
             if iterations >= self.max_iterations {
@@ -966,7 +963,7 @@ impl<'a> NormalProblem<'a> {
                                 *gp = gd as f32;
                                 acc = [acc[0] + *t, acc[1] + *t * *t, acc[2] + gd * *t, acc[3]];
                                 if *t > 0.0 {
-                                    acc[3] = acc[3].min(p / *t);
+                                    acc[3] = acc[3].min(f * p / *t);
                                 }
                             } else {
                                 *t = 0.0;
@@ -1049,9 +1046,9 @@ impl<'a> NormalProblem<'a> {
                             p.iter_mut().zip(u.iter_mut().zip(g.iter().zip(t.iter().zip(r))));
                         for (i, (p, (u, (g, (t, r))))) in cells.enumerate() {
                             let k = b * BLOCK + i;
-                            *u -= tau * r;
+                            *u = f * *u - tau * r;
                             if *p > 0.0 {
-                                let free = *p - tau * t;
+                                let free = f * *p - tau * t;
                                 *p = free.max(0.0);
                                 if free < 0.0 {
                                     ch.push((k, -free));
@@ -1065,6 +1062,7 @@ impl<'a> NormalProblem<'a> {
                         (ch, sum)
                     }),
             );
+            scale = 1.0;
             let sum = blocks.iter().fold(0.0, |a, b| a + b.1);
             let changes: Vec<(usize, f64)> = blocks.into_iter().flat_map(|b| b.0).collect();
             conjugate = true;
@@ -1074,18 +1072,19 @@ impl<'a> NormalProblem<'a> {
             if incremental {
                 op.add_columns(&changes, &mut u);
             }
-            fresh = incremental && iterations % REFRESH != 0;
+            stale = !incremental || iterations % REFRESH == 0;
+            exact = false;
             match force {
                 Some(pf) => {
                     if sum > 0.0 {
-                        // Applied to p and u by the next pass (or before the next product).
-                        pending = pf / area / sum;
+                        // Applied by the next step (or before the next product).
+                        scale = pf / area / sum;
                     } else {
                         // Everything left the contact: restart uniform.
                         p.fill(1.0);
                         rescale(&mut p, pf / area);
                         conjugate = false;
-                        fresh = false;
+                        stale = true;
                     }
                 }
                 None => {
@@ -1094,12 +1093,15 @@ impl<'a> NormalProblem<'a> {
                         let (k0, d) = (op.self_term(), delta);
                         p.par_iter_mut().zip(g0).for_each(|(p, g)| *p = ((d - g) / k0).max(0.0));
                         conjugate = false;
-                        fresh = false;
+                        stale = true;
                     }
                 }
             }
         }
         drop((u, t, r, gp, scratch));
+        if scale != 1.0 {
+            p.par_iter_mut().for_each(|p| *p *= scale);
+        }
         // The gap with the approach, and the complementarity residual.
         let (pg, ps) = in_order(g.par_chunks_mut(BLOCK).zip(p.par_chunks(BLOCK)).map(|(g, p)| {
             let mut acc = (0.0, 0.0);
