@@ -1,14 +1,15 @@
 //! Probe of the fast partial-slip solver at one grid (issue 20's problem): a Cattaneo sphere
 //! with the contact `across` cells in diameter (elements inside the circle only), T = 0.5 fP,
 //! relative residual 1e-8. Prints the Newton and CG iterations, the time of one operator
-//! product (the limit), the solve time and the error against Mindlin.
+//! product (the limit), the solve time and the error against Mindlin, and the solve time in
+//! units of one real FFT pair of the padded grid timed in the same run (issue 30's measure).
 //!
 //! `cargo run --release -p stickslip-benches --example fast_probe -- 512`
 
 use std::time::Instant;
 use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_halfspace::Material;
-use stickslip_lattice::ContactGrid;
+use stickslip_lattice::{ContactGrid, ScalarConvolution};
 use stickslip_traction::closed::Mindlin;
 use stickslip_traction::{ElementState, FastConfig, FastProblem, Load, Tolerance};
 
@@ -53,6 +54,29 @@ fn main() {
         op.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
     }
     let product = t1.elapsed().as_secs_f64() / reps as f64;
+    // The bound of issue 30: one real FFT pair (forward and inverse, no padding exploited)
+    // of the padded size, timed here in the same run.
+    let (mx, my) = op.fft_size();
+    let pair_op = ScalarConvolution::<f64>::torus(mx, my, (mx, my), (1.0, 1.0), |_, _| 1.0);
+    let field: Vec<f64> = (0..mx * my).map(|k| (k % 7) as f64).collect();
+    let mut out = vec![0.0; mx * my];
+    let mut ps = pair_op.make_scratch();
+    pair_op.apply(&field, &mut out, &mut ps);
+    let t1 = Instant::now();
+    for _ in 0..reps {
+        pair_op.apply(&field, &mut out, &mut ps);
+    }
+    let pair = t1.elapsed().as_secs_f64() / reps as f64;
+    // The same pair on one core (the definition of ../shared/PEERS.md's bound).
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("pool");
+    let pair1 = one.install(|| {
+        let t1 = Instant::now();
+        for _ in 0..reps {
+            pair_op.apply(&field, &mut out, &mut ps);
+        }
+        t1.elapsed().as_secs_f64() / reps as f64
+    });
+    drop((pair_op, field, out, ps));
     if std::env::args().nth(3).is_some_and(|a| a == "products") {
         for _ in 0..100 {
             op.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
@@ -78,7 +102,8 @@ fn main() {
     println!(
         "across {across}: N = {n}, FFT {:?}, setup {setup:.2} s, product {:.1} ms; \
          {} levels ({:.2} s), {} Newton, {} CG, {} products, residual {:.1e}; solve {secs:.2} s wall, {cpu:.2} s CPU \
-         ({:.0} % in products), peak memory {:.0} MiB; stick radius {:+.2} cells, shift {:+.4} % from Mindlin",
+         ({:.0} % in products), peak memory {:.0} MiB; stick radius {:+.2} cells, shift {:+.4} % from Mindlin; \
+         one real FFT pair of {mx}x{my} {:.1} ms on 2 threads, {:.1} ms on one: the solve is {:.0} / {:.0} pairs",
         sol.info.fft_size,
         1e3 * product,
         sol.info.levels,
@@ -91,5 +116,9 @@ fn main() {
         peak_rss() as f64 / (1024.0 * 1024.0),
         (r_stick - mindlin.stick_radius()) / h,
         100.0 * (sol.shift.0 / mindlin.compliance_relative(&s, &s) - 1.0),
+        1e3 * pair,
+        1e3 * pair1,
+        secs / pair,
+        secs / pair1,
     );
 }
