@@ -12,12 +12,18 @@ array, at the same tolerance (1e-8 unless --tol).
 
 Ours runs as the example (one process per solve; the time is the solver's own
 `solve_seconds` including its coarser levels, plus the operator set-up printed apart).
-ASPHER 0.1.3 (`../shared/PEERS.md` says how to install it) runs `solve_nested` with its
+ASPHER 0.1.3 (installed as below) runs `solve_nested` with its
 defaults (nested grids from 64, |q| preconditioner) on the `periodic` backend for the rough
 surface, and on the `fft` and the default `h2` backends for the free sphere; the time is
 the `solve_nested` call (operators, coarse levels, finest level). Printed per solver: time,
 iterations on the finest lattice and on the coarse ones, the contact fraction, and the
 pressure fields' difference (relative L2 and max over max).
+
+Install ASPHER (no wheels; about 4 minutes; a system Eigen avoids a download):
+    apt-get install -y libeigen3-dev cmake
+    python3 -m venv .aspher && .aspher/bin/pip install numpy rfgen scikit-build-core pybind11
+    CMAKE_ARGS="-DEigen3_DIR=/usr/share/eigen3/cmake -DASPHER_NATIVE=OFF" \
+      .aspher/bin/pip install --no-build-isolation --no-binary aspher aspher==0.1.3.post1
 
 Usage (ASPHER in a venv, outside CI):
     cargo build --release -p stickslip-benches --example normal_probe

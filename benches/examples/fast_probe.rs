@@ -67,7 +67,7 @@ fn main() {
         pair_op.apply(&field, &mut out, &mut ps);
     }
     let pair = t1.elapsed().as_secs_f64() / reps as f64;
-    // The same pair on one core (the definition of ../shared/PEERS.md's bound).
+    // The same pair on one core (the unit of the bound quoted in docs/peers.md).
     let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("pool");
     let pair1 = one.install(|| {
         let t1 = Instant::now();

@@ -863,6 +863,155 @@ fn traction_lp_ellipse_ratios() -> Outcome {
 }
 
 // ---------------------------------------------------------------------------------------------
+// normal (issue 30: the nested, preconditioned solver)
+
+/// A nested solve against the cold one of the same problem, both certified to 1e-10: the
+/// largest pressure difference over the peak pressure, and the levels used.
+fn nested_vs_cold(
+    nx: usize,
+    ny: usize,
+    g0: &[f64],
+    boundary: stickslip_normal::Boundary,
+    load: stickslip_normal::NormalLoad,
+) -> Result<(f64, usize, usize), String> {
+    use stickslip_normal::{Nesting, NormalProblem};
+    let pb = NormalProblem::new(
+        nx,
+        ny,
+        (2e-6, 2e-6),
+        g0,
+        [Material::new(210e9, 0.3).unwrap(), Material::rigid()],
+        boundary,
+    )
+    .map_err(|e| e.to_string())?
+    .with_tolerance(Tolerance::relative(1e-10).unwrap())
+    .with_min_contact_cells(1);
+    let s = pb.solve(load).map_err(|e| e.to_string())?;
+    let c = pb.clone().with_nesting(Nesting::Cold).solve(load).map_err(|e| e.to_string())?;
+    for x in [&s, &c] {
+        if x.info.gap_residual > 1e-10
+            || x.info.complementarity_residual > 1e-10
+            || x.info.force_residual > 1e-10
+        {
+            return Err(format!("{nx}x{ny}: residual {:e} above 1e-10", x.info.residual));
+        }
+    }
+    let e = s.pressure.iter().zip(&c.pressure).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
+        / c.peak_pressure.max(f64::MIN_POSITIVE);
+    Ok((e, s.info.levels, s.contact_cells))
+}
+
+fn normal_nesting_hard_cases() -> Outcome {
+    use stickslip_normal::{Boundary, NormalLoad};
+    let sphere = |nx: usize, ny: usize| -> Vec<f64> {
+        (0..nx * ny)
+            .map(|k| {
+                let x = ((k % nx) as f64 + 0.5 - 0.5 * nx as f64) * 2e-6;
+                let y = ((k / nx) as f64 + 0.5 - 0.5 * ny as f64) * 2e-6;
+                (x * x + y * y) / 2e-3
+            })
+            .collect()
+    };
+    let mut w = Worst::default();
+    // Lattices that cannot be coarsened (all the way), and their levels.
+    for (nx, ny, b, levels) in [
+        (129usize, 128usize, Boundary::Periodic, 0usize),
+        (130, 132, Boundary::Periodic, 1),
+        (129, 127, Boundary::Free, 2),
+        (64, 64, Boundary::Free, 1),
+    ] {
+        let (e, l, _) = nested_vs_cold(nx, ny, &sphere(nx, ny), b, NormalLoad::Force(2.0))?;
+        if l != levels {
+            return Err(format!("{nx}x{ny} {b:?}: {l} levels, expected {levels}"));
+        }
+        w.add(e, || format!("{nx}x{ny} {b:?}"))?;
+    }
+    // A contact that vanishes on the coarse level: single low cells, displacement control.
+    let n = 128;
+    let mut g0 = vec![1e-7; n * n];
+    for k in [40 * n + 31, 77 * n + 90, 64 * n + 64] {
+        g0[k] = 0.0;
+    }
+    let (e, l, cells) = nested_vs_cold(n, n, &g0, Boundary::Free, NormalLoad::Approach(5e-8))?;
+    if l != 0 || cells != 3 {
+        return Err(format!("vanishing coarse contact: {l} levels, {cells} cells"));
+    }
+    w.add(e, || "vanishing coarse contact".into())?;
+    // Periodic full contact: a wave pressed flat under force control.
+    let wave: Vec<f64> = (0..n * n)
+        .map(|k| 1e-6 * (1.0 - (2.0 * PI * ((k % n) as f64 + 0.5) / n as f64).cos()))
+        .collect();
+    let (e, l, cells) = nested_vs_cold(n, n, &wave, Boundary::Periodic, NormalLoad::Force(1e4))?;
+    if cells != n * n || l == 0 {
+        return Err(format!("periodic full contact: {cells} cells, {l} levels"));
+    }
+    w.add(e, || "periodic full contact".into())?;
+    w.check(1e-7, "nested against cold, max |dp| / p_max")
+}
+
+fn normal_tiny_contact_refused() -> Outcome {
+    use stickslip_normal::{Boundary, Error, NormalLoad, NormalProblem};
+    let n = 128;
+    let g0: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let x = ((k % n) as f64 + 0.5 - 64.0) * 1e-6;
+            let y = ((k / n) as f64 + 0.5 - 64.0) * 1e-6;
+            (x * x + y * y) / 2e-2
+        })
+        .collect();
+    let m = Material::new(210e9, 0.3).unwrap();
+    let pb = NormalProblem::new(n, n, (1e-6, 1e-6), &g0, [m, m], Boundary::Free)
+        .map_err(|e| e.to_string())?;
+    match pb.solve(NormalLoad::Force(1e-5)) {
+        Err(Error::UnresolvedContact { cells, minimum }) if cells < minimum => {
+            Ok(format!("{cells} cells < {minimum}: refused after 2 coarse levels"))
+        }
+        Ok(s) => Err(format!("accepted a contact of {} cells", s.contact_cells)),
+        Err(e) => Err(format!("wrong error: {e}")),
+    }
+}
+
+fn normal_iterations_flat() -> Outcome {
+    use stickslip_benches::surfaces::{rough_problem, PERIOD};
+    use stickslip_normal::{Boundary, Nesting, NormalLoad, NormalProblem, Preconditioner};
+    let mut fine = Vec::new();
+    let mut plain = Vec::new();
+    for n in [256usize, 512, 1024] {
+        let (gap, pm) = rough_problem(n);
+        let h = PERIOD / n as f64;
+        let pb = NormalProblem::new(
+            n,
+            n,
+            (h, h),
+            &gap,
+            [Material::new(210e9, 0.3).unwrap(), Material::rigid()],
+            Boundary::Periodic,
+        )
+        .map_err(|e| e.to_string())?
+        .with_tolerance(Tolerance::relative(1e-8).unwrap())
+        .with_min_contact_cells(1);
+        let load = NormalLoad::Force(pm * PERIOD * PERIOD);
+        fine.push(pb.solve(load).map_err(|e| e.to_string())?.info.iterations);
+        if n > 512 {
+            continue;
+        }
+        let p = pb
+            .with_nesting(Nesting::Cold)
+            .with_preconditioner(Preconditioner::Identity)
+            .solve(load)
+            .map_err(|e| e.to_string())?;
+        plain.push(p.info.iterations);
+    }
+    let (lo, hi) = (*fine.iter().min().unwrap(), *fine.iter().max().unwrap());
+    if hi > lo + 3 || fine[2] > fine[0] + 3 {
+        return Err(format!("fine iterations {fine:?} grow with the lattice"));
+    }
+    Ok(format!(
+        "fine iterations {fine:?} at 256, 512, 1024 (plain CG, cold: {plain:?} at 256, 512)"
+    ))
+}
+
+// ---------------------------------------------------------------------------------------------
 // the table
 
 /// One table case: id (as in docs/hard-cases.md) and its check.
@@ -896,6 +1045,9 @@ const CASES: &[Case] = &[
     Case { id: "traction/lp-ties-degenerate", run: traction_lp_ties_degenerate },
     Case { id: "traction/zero-pressure-elements", run: traction_zero_pressure_elements },
     Case { id: "traction/lp-ellipse-ratios", run: traction_lp_ellipse_ratios },
+    Case { id: "normal/nesting-hard-cases", run: normal_nesting_hard_cases },
+    Case { id: "normal/tiny-contact-refused", run: normal_tiny_contact_refused },
+    Case { id: "normal/iterations-flat", run: normal_iterations_flat },
 ];
 
 /// Ids of the proptest cases below (documented like the table cases).
