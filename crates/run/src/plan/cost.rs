@@ -106,10 +106,12 @@ pub(crate) fn estimate(
         mem += n * 12 * 8 * 4;
     }
     if let Geometry::Surface(s) = &scene.geometry {
-        // The normal solve: measured (rough sphere, residual 1e-8, 2 loaded cores) 0.34 s at
-        // 256^2, 2.5 s at 512^2, 19 s at 1024^2, about 17 doubles per cell.
+        // The normal solve (nested, preconditioned; issue 30): measured on 2 cores, residual
+        // 1e-8, set-up included, 0.03 s at 256^2, 0.5 s at 1024^2, 2.4 s at 2048^2, 10 s at
+        // 4096^2 (rough periodic and free Hertz alike, docs/peers.md), growing as cells^1.05
+        // to 1.1; taken a third higher for a shared machine and tighter tolerances.
         let n = (s.cells[0] * s.cells[1]) as f64;
-        secs += 0.34 * (n / 65536.0).powf(1.45);
+        secs += 0.04 * (n / 65536.0).powf(1.1);
         // The solver's own estimate of its working memory, and the initial gap.
         let boundary = match s.boundary {
             stickslip_scene::SurfaceBoundary::Free => stickslip_normal::Boundary::Free,
