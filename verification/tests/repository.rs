@@ -85,13 +85,14 @@ fn kinds(k: &BTreeSet<Kind>) -> String {
 
 /// The physics crates: libraries that must not know about scenes, the CLI, the
 /// verification or the benches.
-const PHYSICS: [&str; 6] = [
+const PHYSICS: [&str; 7] = [
     "stickslip-special",
     "stickslip-quad",
     "stickslip-halfspace",
     "stickslip-graded",
     "stickslip-rolling",
     "stickslip-traction",
+    "stickslip-wheelrail",
 ];
 
 /// The layers above the physics crates.
