@@ -5,7 +5,8 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use stickslip_scene::{Plan, RunOptions, Scene};
+use stickslip_run::{Plan, RunOptions};
+use stickslip_scene::Scene;
 
 /// Words of the implementation that must never reach a user.
 const INTERNAL: [&str; 6] = ["Qty", "Raw", "untagged", "struct ", "f64", "i64"];

@@ -1,5 +1,5 @@
 //! The native part of the `stickslip` Python package (`stickslip._stickslip`): thin
-//! bindings to the scene crate. The Python layer (`stickslip/__init__.py`) turns scenes
+//! bindings to the scene, run, report and sweep crates. The Python layer (`stickslip/__init__.py`) turns scenes
 //! given as paths, TOML text or dicts into TOML text, results into NumPy arrays, and the
 //! raw error into `SceneError` / `AuditError`.
 
@@ -12,10 +12,10 @@ use std::path::PathBuf;
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
-use stickslip_scene::sweep::{Cell, Kind, Shard, Sweep, Vary};
-use stickslip_scene::{
-    write_outputs_with, MachineLimits, Plan, RunOptions, Scene, SceneError, WriteOptions,
-};
+use stickslip_report::{write_outputs_with, WriteOptions};
+use stickslip_run::{MachineLimits, Plan, RunOptions};
+use stickslip_scene::{Scene, SceneError};
+use stickslip_sweep::{Cell, Kind, Shard, Sweep, Vary};
 
 create_exception!(
     _stickslip,
@@ -38,7 +38,7 @@ fn raise(e: SceneError) -> PyErr {
     };
     let text = e.to_string();
     PyErr::new::<RawSceneError, _>((
-        stickslip_scene::sweep::kind_name(e.kind).to_string(),
+        e.kind.name().to_string(),
         e.exit_code(),
         e.message,
         e.key,
@@ -52,7 +52,7 @@ fn raise(e: SceneError) -> PyErr {
 }
 
 fn read(text: &str, file: Option<PathBuf>) -> PyResult<Scene> {
-    Scene::from_toml_str(text, file).map_err(raise)
+    stickslip_run::read_scene(text, file).map_err(raise)
 }
 
 /// TOML text from a JSON object (a scene given as a dict).
@@ -117,7 +117,7 @@ fn explain(text: &str, file: Option<PathBuf>) -> PyResult<String> {
     Ok(Plan::new(&scene).map_err(raise)?.explain())
 }
 
-/// A sweep (the scene crate's `Sweep`): point enumeration, shards, columns and one row per
+/// A sweep (`stickslip_sweep::Sweep`): point enumeration, shards, columns and one row per
 /// point, the same code as `stickslip sweep`.
 #[pyclass(name = "Sweep", module = "stickslip._stickslip", frozen)]
 struct PySweep(Sweep);

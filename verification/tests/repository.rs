@@ -85,27 +85,49 @@ fn kinds(k: &BTreeSet<Kind>) -> String {
 
 /// The physics crates: libraries that must not know about scenes, the CLI, the
 /// verification or the benches.
-const PHYSICS: [&str; 7] = [
+const PHYSICS: [&str; 9] = [
     "stickslip-special",
     "stickslip-quad",
     "stickslip-halfspace",
     "stickslip-graded",
-    "stickslip-rolling",
+    "stickslip-lattice",
     "stickslip-traction",
+    "stickslip-normal",
+    "stickslip-rolling",
     "stickslip-wheelrail",
 ];
 
 /// The layers above the physics crates.
-const UPPER: [&str; 4] =
-    ["stickslip-scene", "stickslip", "stickslip-verification", "stickslip-benches"];
+const UPPER: [&str; 7] = [
+    "stickslip-scene",
+    "stickslip-run",
+    "stickslip-report",
+    "stickslip-sweep",
+    "stickslip",
+    "stickslip-verification",
+    "stickslip-benches",
+];
+
+/// The path of a run, each part with the parts it must not depend on (not even for tests):
+/// the scene format knows nothing of running, the run nothing of its files or of sweeps,
+/// and the report and the sweeps sit beside each other on the run.
+const RUN_PATH: [(&str, &[&str]); 4] = [
+    ("stickslip-scene", &["stickslip-run", "stickslip-report", "stickslip-sweep"]),
+    ("stickslip-run", &["stickslip-report", "stickslip-sweep"]),
+    ("stickslip-report", &["stickslip-sweep"]),
+    ("stickslip-sweep", &["stickslip-report"]),
+];
 
 /// What `special` and `quad` must not use: anything about contact mechanics.
-const CONTACT: [&str; 5] = [
+const CONTACT: [&str; 8] = [
     "stickslip-halfspace",
     "stickslip-graded",
     "stickslip-rolling",
     "stickslip-traction",
     "stickslip-scene",
+    "stickslip-run",
+    "stickslip-report",
+    "stickslip-sweep",
 ];
 
 /// The package a short name of the ARCHITECTURE.md picture stands for: `cli` is `stickslip`,
@@ -194,6 +216,18 @@ fn physics_crates_do_not_depend_on_upper_layers() {
         if (from == "stickslip-special" || from == "stickslip-quad") && CONTACT.contains(&to) {
             wrong.push(format!(
                 "{from} -> {to} ({}): special and quad know nothing about contact mechanics",
+                kinds(k)
+            ));
+        }
+        if RUN_PATH.iter().any(|(p, not)| *p == from && not.contains(&to)) {
+            wrong.push(format!(
+                "{from} -> {to} ({}): the parts of a run depend on earlier parts only (scene, run, then report or sweep)",
+                kinds(k)
+            ));
+        }
+        if from == "stickslip-report" && PHYSICS.contains(&to) {
+            wrong.push(format!(
+                "{from} -> {to} ({}): the report writes what the run computed; what it needs from a physics crate belongs in the run's outcome",
                 kinds(k)
             ));
         }

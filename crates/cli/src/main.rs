@@ -46,10 +46,9 @@ use clap::{CommandFactory, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 mod sweep;
 
-use stickslip_scene::{
-    write_outputs_report, Plan, Progress, ReportContext, RunOptions, Scene, SceneError, SolverOut,
-    WriteOptions, Zones,
-};
+use stickslip_report::{write_outputs_report, ReportContext, WriteOptions};
+use stickslip_run::{Plan, Progress, RunOptions, SolverOut, Zones};
+use stickslip_scene::{Scene, SceneError};
 
 mod completions;
 mod new;
@@ -109,7 +108,7 @@ enum Command {
         json: bool,
         /// Refuse a run the planner estimates to take longer than this (seconds). Runs whose
         /// estimated memory exceeds the memory available now are refused too.
-        #[arg(long, value_name = "SECONDS", default_value_t = stickslip_scene::DEFAULT_TIME_LIMIT_SECONDS, value_parser = positive_seconds)]
+        #[arg(long, value_name = "SECONDS", default_value_t = stickslip_run::DEFAULT_TIME_LIMIT_SECONDS, value_parser = positive_seconds)]
         time_limit: f64,
         /// No progress bar and no closing summary on stderr (errors are still printed).
         #[arg(long, short)]
@@ -206,7 +205,7 @@ fn note(text: &str) {
 
 fn load(scene: Option<&PathBuf>) -> Result<Scene, SceneError> {
     match scene {
-        Some(p) => Scene::from_file(p),
+        Some(p) => stickslip_run::read_scene_file(p),
         None => Ok(Scene::default_scene()),
     }
 }
@@ -306,7 +305,7 @@ fn cmd_run(
     let scene = load(scene)?;
     // The plan `explain` prints; execution follows it and decides nothing again.
     let plan = Plan::new(&scene)?;
-    plan.check_machine(&stickslip_scene::MachineLimits::detect(time_limit))?;
+    plan.check_machine(&stickslip_run::MachineLimits::detect(time_limit))?;
     let bar = Bar::new(!quiet);
     let cb = |p: Progress| bar.update(p);
     let opts = RunOptions { progress: Some(&cb) };

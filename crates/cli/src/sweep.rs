@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use stickslip_scene::sweep::{merge, Cell, Shard, Sweep, Table, Vary};
+use stickslip_sweep::{merge, Cell, Shard, Sweep, Table, Vary};
 
 use crate::{emit, note, Failure};
 
@@ -33,7 +33,7 @@ pub struct SweepArgs {
     shard: Option<Shard>,
     /// Refuse a point the planner estimates to take longer than this (seconds); it becomes
     /// a failed row.
-    #[arg(long, value_name = "SECONDS", default_value_t = stickslip_scene::DEFAULT_TIME_LIMIT_SECONDS, value_parser = crate::positive_seconds)]
+    #[arg(long, value_name = "SECONDS", default_value_t = stickslip_run::DEFAULT_TIME_LIMIT_SECONDS, value_parser = crate::positive_seconds)]
     time_limit: f64,
 }
 

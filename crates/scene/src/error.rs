@@ -29,6 +29,24 @@ pub enum ErrorKind {
 }
 
 impl ErrorKind {
+    /// The kind in plain words, as a sweep's table (`error_kind`) and the Python package's
+    /// errors name it: "io", "syntax", "schema", "unit", "out of range", "impossible",
+    /// "unsupported", "solver", "audit".
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            ErrorKind::Io => "io",
+            ErrorKind::Syntax => "syntax",
+            ErrorKind::Schema => "schema",
+            ErrorKind::Unit => "unit",
+            ErrorKind::OutOfRange => "out of range",
+            ErrorKind::Impossible => "impossible",
+            ErrorKind::Unsupported => "unsupported",
+            ErrorKind::Solver => "solver",
+            ErrorKind::Audit => "audit",
+        }
+    }
+
     /// The exit status of the `stickslip` program for an error of this kind, the one place
     /// the mapping lives:
     ///
@@ -72,7 +90,23 @@ pub struct SceneError {
     /// What is allowed, or how to fix it.
     pub hint: Option<String>,
     /// The checks that failed, for an [`ErrorKind::Audit`] error; empty otherwise.
-    pub checks: Vec<crate::exec::outcome::Check>,
+    pub checks: Vec<Check>,
+}
+
+/// One check of the audit: what was measured, the limit, and whether it passed. A run's
+/// result lists every check it ran; an [`ErrorKind::Audit`] error carries those that failed.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Check {
+    /// What is checked, e.g. "coulomb", "normal resultant".
+    pub name: &'static str,
+    /// What was measured (relative, or in the unit the description states).
+    pub value: f64,
+    /// The largest value that passes.
+    pub limit: f64,
+    /// value <= limit.
+    pub pass: bool,
+    /// What the value means.
+    pub what: String,
 }
 
 impl SceneError {
@@ -83,7 +117,8 @@ impl SceneError {
         self.kind.exit_code()
     }
 
-    pub(crate) fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
+    /// An error of `kind` saying `message`, not yet located.
+    pub fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
         Self {
             kind,
             file: None,
@@ -95,25 +130,28 @@ impl SceneError {
         }
     }
 
-    pub(crate) fn key(mut self, key: impl Into<String>) -> Self {
+    /// Name the dotted key the error belongs to.
+    pub fn key(mut self, key: impl Into<String>) -> Self {
         self.key = Some(key.into());
         self
     }
 
-    pub(crate) fn hint(mut self, hint: impl Into<String>) -> Self {
+    /// Say what is allowed, or how to fix it.
+    pub fn hint(mut self, hint: impl Into<String>) -> Self {
         self.hint = Some(hint.into());
         self
     }
 
     /// Attach a byte span of `source`, converted to line and column.
-    pub(crate) fn at(mut self, source: &str, span: Option<std::ops::Range<usize>>) -> Self {
+    pub fn at(mut self, source: &str, span: Option<std::ops::Range<usize>>) -> Self {
         if let Some(span) = span {
             self.position = Some(line_col(source, span.start));
         }
         self
     }
 
-    pub(crate) fn in_file(mut self, file: Option<PathBuf>) -> Self {
+    /// Name the scene file, unless a file is already named.
+    pub fn in_file(mut self, file: Option<PathBuf>) -> Self {
         if self.file.is_none() {
             self.file = file;
         }
@@ -168,19 +206,25 @@ impl std::error::Error for SceneError {}
 /// dotted key to change, what is wrong, and a hint. [`crate::Scene::locate`] makes it a
 /// [`SceneError`].
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Issue {
+pub struct Issue {
+    /// What kind of problem.
     pub kind: ErrorKind,
+    /// The full dotted key to change.
     pub key: String,
+    /// What is wrong.
     pub message: String,
+    /// What is allowed, or how to fix it (empty for none).
     pub hint: String,
 }
 
 impl Issue {
-    pub(crate) fn new(kind: ErrorKind, key: &str, message: impl Into<String>) -> Self {
+    /// A refusal of `kind` at `key`, saying `message`, without a hint.
+    pub fn new(kind: ErrorKind, key: &str, message: impl Into<String>) -> Self {
         Issue { kind, key: key.to_string(), message: message.into(), hint: String::new() }
     }
 
-    pub(crate) fn hint(mut self, hint: impl Into<String>) -> Self {
+    /// Say what is allowed, or how to fix it.
+    pub fn hint(mut self, hint: impl Into<String>) -> Self {
         self.hint = hint.into();
         self
     }

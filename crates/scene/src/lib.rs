@@ -1,33 +1,29 @@
-//! Scenes: the user's way into stickslip.
+//! The stickslip scene format: a contact problem as a TOML file or built in code, read,
+//! converted to SI and validated, with errors naming file, line, column, key and what is
+//! allowed.
 //!
-//! A scene is a TOML file describing one contact problem (bodies, materials, loads, motion,
-//! requested outputs); its reference is the repository's `docs/SCENES.md`. This crate is the
-//! only place (with the CLI) that knows about units, TOML and files; the physics crates work
-//! on plain SI numbers.
+//! A scene describes one contact problem (bodies, materials, loads, motion, requested
+//! outputs); its reference is the repository's `docs/SCENES.md`. This crate knows the format
+//! only: it solves nothing and decides nothing about methods. The run (planner, stages,
+//! audit) is `stickslip-run`, the result files are `stickslip-report`, sweeps are
+//! `stickslip-sweep`. The one routine it takes from a physics crate is the synthesis of a
+//! random rough surface (`stickslip_lattice::roughness`), which the reader calls for
+//! `[geometry.roughness]` without a file: the heights are part of the scene as read, and a
+//! parameter the synthesis refuses is located in the file like any other value.
 //!
-//! The path of a scene is **scene → validate → plan → execute**:
-//!
+//! - [`Scene`]: the typed scene (every quantity in SI); [`Scene::from_toml_str`] and
+//!   [`Scene::from_file`] read and validate it, [`SceneBuilder`] builds it in code and
+//!   validates it the same way;
 //! - [`units`]: quantities with units to SI; [`materials`]: named materials (`material =
 //!   "steel"`);
-//! - [`Scene`]: parsing and validation, with errors naming file, line, column, key and what is
-//!   allowed, including the combinations the planner refuses;
-//! - [`plan`]: the planner ([`Plan::new`]): a typed [`Recipe`] (the method and resolved
-//!   inputs of every stage), the effects on/off with reasons, the estimated cost; `explain`
-//!   prints it;
-//! - [`exec`]: [`Plan::execute`] runs the recipe stage by stage (normal contact → friction
-//!   → twist → rolling → load cycle → subsurface field) into an [`Outcome`] (result.json),
-//!   deciding nothing again ([`Evaluations`] counts what ran); [`run()`] is plan + execute;
-//! - [`write_outputs`]: result.json, CSV, SVG plots and report.html, written all-or-nothing
-//!   ([`write_outputs_report`] puts the scene and its plan into the report);
+//! - [`SceneError`] and [`ErrorKind`]: the error of a scene, also used for what the run
+//!   refuses (an [`Issue`] located by [`Scene::locate`]) and for a failed audit (its
+//!   [`Check`]s), and the exit status of each kind;
 //! - [`json_schema`]: the JSON Schema of the format, for editors; [`templates`]: the
-//!   commented starting scenes of `stickslip new`;
-//! - [`sweep`]: parameter sweeps (the cartesian product of varied keys, shards, the CSV
-//!   and Parquet table, merging shards);
-//! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
-//!   techniques per scene, from the planner alone.
+//!   commented starting scenes of `stickslip new`.
 //!
 //! ```
-//! use stickslip_scene::{run, RunOptions, Scene};
+//! use stickslip_scene::{Geometry, Scene};
 //! let scene = Scene::from_toml_str(
 //!     r#"
 //! [geometry]
@@ -47,56 +43,27 @@
 //!     None,
 //! )
 //! .unwrap();
-//! let out = run(&scene, &RunOptions::default()).unwrap();
-//! assert!(out.audit.passed);
-//! // 2D Hertz: a^2 = 4 P R / (pi E*), E* = E / (2 (1 - nu^2)) for two steel bodies.
-//! let e_star = 210e9 / (2.0 * (1.0 - 0.3 * 0.3));
-//! let a = (4.0 * 100e3 * 0.02 / (std::f64::consts::PI * e_star)).sqrt();
-//! assert!((out.contact.a - a).abs() < 1e-12 * a);
-//! assert_eq!(out.forces.tangential, 15e3);
+//! assert_eq!(scene.geometry, Geometry::Cylinder { radius: 0.02 });
+//! assert_eq!(scene.load.friction, 0.3);
+//! // A refusal names the key, and the line and column of its value.
+//! let text = "[geometry]\nkind = \"cylinder\"\nradius = \"-1 mm\"\n[substrate]\nmodel = \"homogeneous\"\ne = \"210 GPa\"\nnu = 0.3\n[load]\nnormal = \"1 kN/m\"\n";
+//! let e = Scene::from_toml_str(text, None).unwrap_err();
+//! assert_eq!(e.key.as_deref(), Some("geometry.radius"));
+//! assert_eq!(e.position, Some((3, 10)));
 //! ```
 
 mod error;
-pub mod exec;
 pub mod json_schema;
 pub mod materials;
-mod output;
-mod overview;
-pub mod plan;
-mod plots;
 mod raw;
-mod report;
 mod scene;
-pub mod sweep;
 pub mod templates;
 pub mod units;
 
-pub use error::{ErrorKind, SceneError};
-pub use exec::outcome::{
-    Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
-    FieldOut, FieldPeak, Forces, GridZones, Outcome, Progress, RigidOut, RollingOut, RunOptions,
-    SolverOut, SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
-};
-pub use output::{write_outputs, write_outputs_report, write_outputs_with, WriteOptions, Written};
-pub use overview::scenes_page;
-pub use plan::recipe::Recipe;
-pub use plan::{
-    Cost, Effect, EffectPlan, MachineLimits, Plan, Technique, DEFAULT_TIME_LIMIT_SECONDS,
-};
-pub use report::ReportContext;
-
-/// Plan `scene` and execute the plan: [`Plan::new`] then [`Plan::execute`].
-///
-/// # Errors
-/// A [`SceneError`] for a scene the planner refuses, or (kind [`ErrorKind::Solver`]) when a
-/// physics routine fails or returns a non-finite number.
-#[allow(clippy::result_large_err)]
-pub fn run(scene: &Scene, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
-    Plan::new(scene)?.execute(opts)
-}
+pub use error::{Check, ErrorKind, Issue, SceneError};
 pub use scene::{
-    Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion,
-    NormalLoad, NormalSweep, Outputs, Patch, PatchShape, Scene, SceneBuilder, SolverOptions,
-    Source, Substrate, DEFAULT_SCENE, MAX_GRID,
+    patch_bounds, Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method,
+    Motion, NormalLoad, NormalSweep, Outputs, Patch, PatchShape, Profile, Scene, SceneBuilder,
+    SolverOptions, Source, Substrate, Surface, SurfaceBoundary, DEFAULT_SCENE, MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};

@@ -1,6 +1,7 @@
-//! Named materials in scenes: `material = "steel"` reads as the table's E and nu, `explain`
-//! prints them, a name together with `e` or `nu` is refused at the extra key, and
-//! docs/materials.md prints the table of the code.
+//! Named materials in scenes: `material = "steel"` reads as the table's E and nu, a name
+//! together with `e` or `nu` is refused at the extra key, and docs/materials.md prints the
+//! table of the code. (A run with named materials and `explain`: the run's
+//! `tests/materials.rs`.)
 
 // SceneError carries file, position, key and hint; tests return it as is.
 #![allow(clippy::result_large_err)]
@@ -8,9 +9,7 @@
 use std::path::PathBuf;
 
 use stickslip_scene::materials::{lookup, table_markdown};
-use stickslip_scene::{
-    run, Elastic, ErrorKind, Indenter, Plan, RunOptions, Scene, SceneError, Substrate,
-};
+use stickslip_scene::{Elastic, ErrorKind, Indenter, Scene, SceneError, Substrate};
 
 /// The issue's newcomer: a 1 mN load on a 0.5 mm ball, named materials.
 const BALL: &str = r#"title = "silicon nitride ball on glass"
@@ -54,33 +53,6 @@ fn a_named_material_is_its_e_and_nu() {
     let v = read(&visco).unwrap();
     let Substrate::Viscoelastic { elastic, .. } = v.substrate else { panic!("{v:?}") };
     assert_eq!(elastic, lookup("rubber").unwrap().elastic());
-}
-
-/// The contact radius of the run against Hertz, a = (3 P R / (4 E*))^(1/3), computed here.
-#[test]
-fn the_one_millinewton_ball_runs_and_matches_hertz() {
-    let s = read(BALL).unwrap();
-    let out = run(&s, &RunOptions::default()).unwrap();
-    let e_star = 1.0 / ((1.0 - 0.22f64.powi(2)) / 70e9 + (1.0 - 0.27f64.powi(2)) / 310e9);
-    let a = (3.0 * 1e-3 * 0.5e-3 / (4.0 * e_star)).cbrt();
-    assert!((out.contact.a / a - 1.0).abs() < 1e-12, "{} against {a}", out.contact.a);
-    assert!((out.contact.normal_load - 1e-3).abs() < 1e-15);
-}
-
-#[test]
-fn explain_prints_the_moduli_used() {
-    let text = Plan::new(&read(BALL).unwrap()).unwrap().explain();
-    assert!(text.contains("materials (typical values of one grade"), "{text}");
-    assert!(
-        text.contains("substrate  glass: E = 70 GPa, nu = 0.22 (soda-lime float glass"),
-        "{text}"
-    );
-    assert!(text.contains("indenter   silicon nitride: E = 310 GPa, nu = 0.27"), "{text}");
-    // A scene without names prints no such section.
-    let plain = BALL
-        .replace("material = \"glass\"", "e = \"70 GPa\"\nnu = 0.22")
-        .replace("material = \"silicon nitride\"", "e = \"310 GPa\"\nnu = 0.27");
-    assert!(!Plan::new(&read(&plain).unwrap()).unwrap().explain().contains("materials ("));
 }
 
 #[test]

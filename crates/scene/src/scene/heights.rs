@@ -109,12 +109,26 @@ fn csv(b: &[u8]) -> Result<Vec<f64>, String> {
 mod tests {
     use super::*;
 
+    /// A float64 `.npy` file (version 1.0, C order) as NumPy's `np.save` writes it: magic,
+    /// header length, the header padded with spaces to a multiple of 64 bytes, the data.
+    fn npy_file(data: &[f64], shape: &str) -> Vec<u8> {
+        let mut header = format!("{{'descr': '<f8', 'fortran_order': False, 'shape': {shape}, }}");
+        while (10 + header.len() + 1) % 64 != 0 {
+            header.push(' ');
+        }
+        header.push('\n');
+        let mut out = b"\x93NUMPY\x01\x00".to_vec();
+        out.extend_from_slice(&(header.len() as u16).to_le_bytes());
+        out.extend_from_slice(header.as_bytes());
+        data.iter().for_each(|v| out.extend_from_slice(&v.to_le_bytes()));
+        out
+    }
+
     #[test]
-    fn npy_written_by_the_outputs_reads_back() {
+    fn npy_of_two_dimensions_reads_back() {
         let data: Vec<f64> = (0..12).map(|k| k as f64 * 0.5 - 1.0).collect();
-        let bytes = crate::output::npy(&data, &[3, 4]);
-        assert_eq!(npy(&bytes).unwrap(), data);
-        assert!(npy(&crate::output::npy(&data, &[12])).is_err(), "one dimension is refused");
+        assert_eq!(npy(&npy_file(&data, "(3, 4)")).unwrap(), data);
+        assert!(npy(&npy_file(&data, "(12,)")).is_err(), "one dimension is refused");
     }
 
     #[test]

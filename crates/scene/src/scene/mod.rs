@@ -1,4 +1,8 @@
 //! The validated scene: every quantity in SI, every value inside what the physics allows.
+//!
+//! The enums here are exhaustive on purpose: the planner (`stickslip-run`) matches every
+//! variant, so a new kind of geometry, body, load or output does not compile until the
+//! planner has decided how to serve it.
 
 // Scene errors are built on the cold path of parsing and carry the file, position, key and
 // hint for the user; boxing them would buy nothing measurable.
@@ -18,7 +22,6 @@ use crate::error::{ErrorKind, Issue, SceneError};
 
 /// Contact geometry: what touches what.
 #[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
 pub enum Geometry {
     /// A cylinder of radius R on a half-plane (2D, plane strain; loads per unit length).
     Cylinder {
@@ -71,7 +74,6 @@ pub enum SurfaceBoundary {
 
 /// The smooth part of a surface's initial gap, centred on the lattice.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Profile {
     /// A sphere (relative radius R): $g = r^2/(2R)$.
     Sphere {
@@ -170,7 +172,6 @@ impl Geometry {
 
 /// How an elliptical contact is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Ellipse {
     /// The contact semi-axes a (along x) and b (along y), m.
     SemiAxes {
@@ -201,7 +202,6 @@ pub struct Patch {
 
 /// Outline of a patch, centred on its `centre`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum PatchShape {
     /// Axis-aligned square of this side (m).
     Square {
@@ -271,7 +271,7 @@ impl Patch {
 }
 
 /// Bounding box of the patches: (lower-left, upper-right).
-pub(crate) fn patch_bounds(ps: &[Patch]) -> ([f64; 2], [f64; 2]) {
+pub fn patch_bounds(ps: &[Patch]) -> ([f64; 2], [f64; 2]) {
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];
     for p in ps {
@@ -299,7 +299,6 @@ pub struct Elastic {
 
 /// The body below.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Substrate {
     /// Homogeneous, linear elastic.
     Homogeneous(Elastic),
@@ -325,7 +324,6 @@ pub enum Substrate {
 
 /// The body above.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Indenter {
     /// Rigid.
     Rigid,
@@ -337,7 +335,6 @@ pub enum Indenter {
 
 /// How the normal load is prescribed.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum NormalLoad {
     /// The force P (N/m in 2D, N in 3D).
     Force(f64),
@@ -388,7 +385,6 @@ impl NormalSweep {
 
 /// Motion.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
 pub enum Motion {
     /// No motion beyond the applied loads.
     Static,
@@ -429,7 +425,6 @@ pub struct FieldGrid {
 
 /// Unit of a field grid's coordinates.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
 pub enum FieldScale {
     /// The contact half-width a.
     HalfWidth,
@@ -461,7 +456,6 @@ pub struct Outputs {
 
 /// Which method the user asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
 pub enum Method {
     /// Let the planner choose.
     Auto,
@@ -517,7 +511,7 @@ pub struct Scene {
 }
 
 /// The largest grid side the scene format accepts. Whether a grid fits is decided by the
-/// planner's memory estimate ([`crate::plan::MEMORY_LIMIT_BYTES`]): a 3D lattice costs
+/// planner's memory estimate (its limit is 16 GiB of working memory): a 3D lattice costs
 /// about 650 bytes per cell with the fast solver (estimate), so grids of about 5100 per side
 /// and more are refused there; this bound only keeps the arithmetic far from overflow.
 pub const MAX_GRID: usize = 16384;
@@ -566,13 +560,13 @@ impl Source {
     }
 
     /// The text the scene was read from.
-    pub(crate) fn text(&self) -> &str {
+    pub fn text(&self) -> &str {
         &self.text
     }
 
     /// The span of `key`: the value itself, or (for a key not in the file, or an element of
     /// a list) the nearest enclosing value or table that is.
-    pub(crate) fn span(&self, key: &str) -> Option<Range<usize>> {
+    pub fn span(&self, key: &str) -> Option<Range<usize>> {
         let mut k = key;
         loop {
             if let Some(s) = self.spans.get(k) {
@@ -610,8 +604,8 @@ impl Scene {
         Scene::from_toml_str(&text, Some(path.to_path_buf()))
     }
 
-    /// Read a scene from TOML text and validate it, including the combinations the planner
-    /// refuses. `file` is used in error messages only.
+    /// Read a scene from TOML text and validate it ([`Scene::validate`]). `file` is used in
+    /// error messages only.
     ///
     /// # Errors
     /// A [`SceneError`] with the line, column, key and a hint.
@@ -625,14 +619,15 @@ impl Scene {
         SceneBuilder::new(geometry, substrate)
     }
 
-    /// Check every range and combination (the checks of `scene/validate.rs`), then the
-    /// planner's refusals, so that a scene that passes can be planned and run.
+    /// Check every range and combination the format itself forbids (the checks of
+    /// `scene/validate.rs`). What no solver handles (a graded sphere, a grid too large for
+    /// the machine, ...) is the planner's to refuse, located the same way, when the scene
+    /// is planned.
     ///
     /// # Errors
     /// The first refusal, located in the source file when the scene came from one.
     pub fn validate(&self) -> Result<(), SceneError> {
-        validate::validate(self).map_err(|i| self.locate(i))?;
-        crate::plan::check(self).map_err(|i| self.locate(i))
+        validate::validate(self).map_err(|i| self.locate(i))
     }
 
     fn checked(self) -> Result<Scene, SceneError> {
@@ -642,7 +637,7 @@ impl Scene {
 
     /// A refusal as a [`SceneError`]: the key, and when the scene came from a file, the file,
     /// line and column of the key's value (or of its table when the key is absent).
-    pub(crate) fn locate(&self, i: Issue) -> SceneError {
+    pub fn locate(&self, i: Issue) -> SceneError {
         let mut e = SceneError::new(i.kind, i.message).key(i.key.clone());
         if !i.hint.is_empty() {
             e = e.hint(i.hint);

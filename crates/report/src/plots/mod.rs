@@ -1,0 +1,866 @@
+//! SVG plots of an outcome (plotters, SVG backend), rendered to strings so that nothing is
+//! written before every plot has been drawn.
+
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
+use plotters::prelude::*;
+
+mod contour;
+mod parameters;
+
+use stickslip_run::reference;
+use stickslip_run::{Outcome, Plan, SurfaceOut};
+
+use crate::report::eng_near;
+
+type PlotResult = Result<String, String>;
+
+/// A named curve.
+struct Curve<'a> {
+    label: &'a str,
+    x: &'a [f64],
+    y: &'a [f64],
+    colour: RGBColor,
+    /// A closed-form reference, drawn dashed.
+    dashed: bool,
+}
+
+fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for x in v.filter(|x| x.is_finite()) {
+        lo = lo.min(x);
+        hi = hi.max(x);
+    }
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    if hi - lo <= 1e-300 + 1e-12 * hi.abs().max(lo.abs()) {
+        let d = if hi == 0.0 { 1.0 } else { 0.1 * hi.abs() };
+        return (lo - d, hi + d);
+    }
+    let pad = 0.05 * (hi - lo);
+    (lo - pad, hi + pad)
+}
+
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
+
+/// An axis or colour scale in engineering units: values are divided by `div` and labelled
+/// with `unit` (an SI prefix on the base unit, e.g. µm, MPa).
+#[derive(Debug, Clone)]
+struct Units {
+    div: f64,
+    unit: String,
+}
+
+impl Units {
+    /// The prefix that puts the largest magnitude `maxabs` in [1, 1000) (no prefix for an
+    /// empty base unit, i.e. a ratio).
+    fn for_max(maxabs: f64, base: &str) -> Units {
+        if base.is_empty() || !(maxabs.is_finite() && maxabs > 0.0) {
+            return Units { div: 1.0, unit: base.to_string() };
+        }
+        let e3 = ((maxabs.log10() / 3.0).floor() as i32).clamp(-4, 3);
+        let prefix = ["p", "n", "µ", "m", "", "k", "M", "G"][(e3 + 4) as usize];
+        Units { div: 10f64.powi(3 * e3), unit: format!("{prefix}{base}") }
+    }
+
+    fn of(v: impl Iterator<Item = f64>, base: &str) -> Units {
+        Units::for_max(v.filter(|x| x.is_finite()).fold(0.0f64, |m, x| m.max(x.abs())), base)
+    }
+
+    /// An axis description: "name (unit)", or the name alone for a ratio.
+    fn desc(&self, name: &str) -> String {
+        if self.unit.is_empty() {
+            name.to_string()
+        } else {
+            format!("{name} ({})", self.unit)
+        }
+    }
+
+    fn scale(&self, v: &[f64]) -> Vec<f64> {
+        v.iter().map(|x| x / self.div).collect()
+    }
+}
+
+/// A round tick label: as many decimals as the tick spacing of an axis spanning `span` needs
+/// (plotters puts about ten ticks on an axis), no exponent.
+fn tick(v: f64, span: f64) -> String {
+    let step = (span.abs() / 10.0).max(1e-300);
+    let decimals = (-step.log10().floor()).clamp(0.0, 9.0) as usize;
+    let s = format!("{v:.decimals$}");
+    // "-0" and "-0.00" from rounding are zero.
+    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+/// `area` below a title line and, when `sub` is not empty, a smaller line of key parameters.
+fn titled<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    title: &str,
+    sub: &str,
+) -> Result<DrawingArea<DB, plotters::coord::Shift>, String> {
+    let area = area.titled(title, ("sans-serif", 16)).map_err(err)?;
+    if sub.is_empty() {
+        Ok(area)
+    } else {
+        area.titled(sub, ("sans-serif", 13)).map_err(err)
+    }
+}
+
+fn line_chart(
+    (title, sub): (&str, &str),
+    (xname, xbase): (&str, &str),
+    (yname, ybase): (&str, &str),
+    curves: &[Curve<'_>],
+    bands: &[(f64, f64, RGBColor)],
+) -> PlotResult {
+    let xu = Units::of(curves.iter().flat_map(|c| c.x.iter().copied()), xbase);
+    let yu = Units::of(curves.iter().flat_map(|c| c.y.iter().copied()), ybase);
+    let scaled: Vec<(Vec<f64>, Vec<f64>)> =
+        curves.iter().map(|c| (xu.scale(c.x), yu.scale(c.y))).collect();
+    let mut s = String::new();
+    {
+        let root = SVGBackend::with_string(&mut s, (720, 460)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let root = titled(&root, title, sub)?;
+        let (x0, x1) = range(scaled.iter().flat_map(|c| c.0.iter().copied()));
+        let (y0, y1) = range(scaled.iter().flat_map(|c| c.1.iter().copied()));
+        let mut chart = ChartBuilder::on(&root)
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc(xu.desc(xname))
+            .y_desc(yu.desc(yname))
+            .x_label_formatter(&|v| tick(*v, x1 - x0))
+            .y_label_formatter(&|v| tick(*v, y1 - y0))
+            .draw()
+            .map_err(err)?;
+        for &(a, b, col) in bands {
+            chart
+                .draw_series(std::iter::once(Rectangle::new(
+                    [(a / xu.div, y0), (b / xu.div, y1)],
+                    col.mix(0.15).filled(),
+                )))
+                .map_err(err)?;
+        }
+        for (c, (x, y)) in curves.iter().zip(&scaled) {
+            let col = c.colour;
+            let pts = x.iter().copied().zip(y.iter().copied());
+            if c.dashed {
+                chart
+                    .draw_series(DashedLineSeries::new(pts, 7, 4, col.stroke_width(2)))
+                    .map_err(err)?
+                    .label(c.label)
+                    .legend(move |(x, y)| {
+                        plotters::element::DashedPathElement::new(
+                            vec![(x, y), (x + 18, y)],
+                            5,
+                            3,
+                            col.stroke_width(2),
+                        )
+                    });
+            } else {
+                chart
+                    .draw_series(LineSeries::new(pts, col.stroke_width(2)))
+                    .map_err(err)?
+                    .label(c.label)
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 18, y)], col.stroke_width(2))
+                    });
+            }
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    Ok(s)
+}
+
+/// Blue (negative) - white - red (positive) colour scale, symmetric about zero.
+fn diverging(v: f64, vmax: f64) -> RGBColor {
+    let t = if vmax > 0.0 { (v / vmax).clamp(-1.0, 1.0) } else { 0.0 };
+    let w = |a: f64| (255.0 * (1.0 - a.abs())) as u8;
+    if t >= 0.0 {
+        RGBColor(255, w(t), w(t))
+    } else {
+        RGBColor(w(t), w(t), 255)
+    }
+}
+
+/// The colour scale of a map: viridis from 0 to the largest value for a quantity that is
+/// never negative, or the diverging scale centred on zero for a signed one.
+#[derive(Debug, Clone, Copy)]
+enum Scale {
+    Viridis { max: f64 },
+    Diverging { max: f64 },
+}
+
+impl Scale {
+    fn of(v: &[Vec<f64>]) -> Scale {
+        let vals = v.iter().flatten().copied().filter(|x| x.is_finite());
+        let (lo, hi) = vals.fold((0.0f64, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        // A negative value below 1e-9 of the largest is rounding, not a sign.
+        if lo >= -1e-9 * hi.abs() {
+            Scale::Viridis { max: hi }
+        } else {
+            Scale::Diverging { max: hi.max(-lo) }
+        }
+    }
+
+    fn bounds(self) -> (f64, f64) {
+        match self {
+            Scale::Viridis { max } => (0.0, max),
+            Scale::Diverging { max } => (-max, max),
+        }
+    }
+
+    fn colour(self, v: f64) -> RGBColor {
+        use plotters::style::colors::colormaps::{ColorMap, ViridisRGB};
+        match self {
+            Scale::Viridis { max } => {
+                let t = if max > 0.0 { (v / max).clamp(0.0, 1.0) } else { 0.0 };
+                ViridisRGB.get_color_normalized(t, 0.0, 1.0)
+            }
+            Scale::Diverging { max } => diverging(v, max),
+        }
+    }
+}
+
+/// A label of a contour level on a grid of round levels `step` apart: the decimals the step
+/// needs, no exponent, no "-0".
+fn level_label(v: f64, step: f64) -> String {
+    let decimals = (-step.abs().max(1e-300).log10().floor()).clamp(0.0, 9.0) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+/// A linear axis from `lo` to `hi` whose ticks are exactly `ticks` (the contour levels), for
+/// the colour bar. (plotters' own `with_key_points` does not take a label formatter.)
+struct LevelAxis {
+    lo: f64,
+    hi: f64,
+    ticks: Vec<f64>,
+}
+
+impl Ranged for LevelAxis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, v: &f64, limit: (i32, i32)) -> i32 {
+        let t = (v - self.lo) / (self.hi - self.lo);
+        limit.0 + (t * f64::from(limit.1 - limit.0)).round() as i32
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, _hint: Hint) -> Vec<f64> {
+        self.ticks.clone()
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+}
+
+/// Contour lines: thin, dark and half transparent so that the colours stay readable.
+fn contour_style() -> ShapeStyle {
+    RGBColor(20, 20, 20).mix(0.7).stroke_width(1)
+}
+
+/// The colour bar of `scale` in `area`, labelled with the value's name and unit. Its ticks
+/// are the contour levels `levels` (in the units of `units`, `step` apart), each marked
+/// with a contour-styled line across the bar, and the bar's ends where they are round.
+fn colour_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    scale: Scale,
+    units: &Units,
+    name: &str,
+    (step, levels): (f64, &[f64]),
+) -> Result<(), String> {
+    let (lo, hi) = scale.bounds();
+    let (a, b) = (lo / units.div, hi / units.div);
+    let (a, b) = if b > a { (a, b) } else { (a - 1.0, a + 1.0) };
+    let mut ticks = levels.to_vec();
+    let round = |v: f64| step > 0.0 && (v / step - (v / step).round()).abs() < 1e-9;
+    for end in [a, b] {
+        if round(end) {
+            ticks.push(end);
+        }
+    }
+    ticks.sort_by(f64::total_cmp);
+    let mut bar = ChartBuilder::on(area)
+        .margin_top(12)
+        .margin_bottom(45)
+        .margin_right(8)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..1.0, LevelAxis { lo: a, hi: b, ticks })
+        .map_err(|e| e.to_string())?;
+    bar.configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_label_style(("sans-serif", 12))
+        .axis_desc_style(("sans-serif", 13))
+        .y_desc(units.desc(name))
+        .y_label_formatter(&|v| if step > 0.0 { level_label(*v, step) } else { tick(*v, b - a) })
+        .draw()
+        .map_err(|e| e.to_string())?;
+    let n = 64;
+    bar.draw_series((0..n).map(|k| {
+        let (v0, v1) = (a + (b - a) * k as f64 / n as f64, a + (b - a) * (k + 1) as f64 / n as f64);
+        let c = scale.colour(0.5 * (v0 + v1) * units.div);
+        Rectangle::new([(0.0, v0), (1.0, v1)], c.filled())
+    }))
+    .map_err(|e| e.to_string())?;
+    bar.draw_series(
+        levels.iter().map(|&l| PathElement::new(vec![(0.0, l), (1.0, l)], contour_style())),
+    )
+    .map_err(|e| e.to_string())?;
+    Ok(())
+}
+
+/// Plot area (pixels) with equal scales on both axes for spans `w` x `h`, at most 500 x 420.
+fn equal_axes(w: f64, h: f64) -> (u32, u32) {
+    let (mw, mh) = (500.0, 420.0);
+    let k = (mw / w).min(mh / h);
+    ((w * k).round().max(60.0) as u32, (h * k).round().max(60.0) as u32)
+}
+
+/// Edges between a stick cell (`stick[i][j] == 1`) and any other cell or the grid's edge, as
+/// segments in metres: the outline of the stick zone.
+fn stick_outline(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> Vec<[(f64, f64); 2]> {
+    let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
+    let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
+    let is = |i: isize, j: isize| -> bool {
+        i >= 0
+            && j >= 0
+            && (i as usize) < x.len()
+            && (j as usize) < y.len()
+            && stick[i as usize][j as usize] == 1
+    };
+    let mut segs = Vec::new();
+    for i in 0..x.len() {
+        for j in 0..y.len() {
+            if stick[i][j] != 1 {
+                continue;
+            }
+            let (ii, jj) = (i as isize, j as isize);
+            let (xl, xr) = (x[i] - 0.5 * hx, x[i] + 0.5 * hx);
+            let (yl, yr) = (y[j] - 0.5 * hy, y[j] + 0.5 * hy);
+            if !is(ii - 1, jj) {
+                segs.push([(xl, yl), (xl, yr)]);
+            }
+            if !is(ii + 1, jj) {
+                segs.push([(xr, yl), (xr, yr)]);
+            }
+            if !is(ii, jj - 1) {
+                segs.push([(xl, yl), (xr, yl)]);
+            }
+            if !is(ii, jj + 1) {
+                segs.push([(xl, yr), (xr, yr)]);
+            }
+        }
+    }
+    segs
+}
+
+/// Most cells drawn along a side of a map: beyond it, square blocks of cells are merged so
+/// that an SVG of a fine grid stays a few MB (one rectangle per drawn cell).
+const MAX_CELLS_PER_SIDE: usize = 160;
+
+/// Cells merged per block along an axis of `n` cells.
+fn block(n: usize) -> usize {
+    n.div_ceil(MAX_CELLS_PER_SIDE).max(1)
+}
+
+/// Block centres of an axis: the mean of each run of `b` coordinates.
+fn coarse_axis(x: &[f64], b: usize) -> Vec<f64> {
+    x.chunks(b).map(|c| c.iter().sum::<f64>() / c.len() as f64).collect()
+}
+
+/// Block means of `v[j][i]` (rows along y, columns along x).
+fn coarse_rows(v: &[Vec<f64>], by: usize, bx: usize) -> Vec<Vec<f64>> {
+    v.chunks(by)
+        .map(|rows| {
+            let nx = rows[0].len();
+            (0..nx.div_ceil(bx))
+                .map(|ib| {
+                    let cols = ib * bx..((ib + 1) * bx).min(nx);
+                    let cnt = (rows.len() * cols.len()) as f64;
+                    rows.iter().map(|r| r[cols.clone()].iter().sum::<f64>()).sum::<f64>() / cnt
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// A map of `v[j][i]` (rows along y, columns along x) of the quantity `name` in `base` units.
+struct Map<'a> {
+    title: String,
+    /// Key parameters, a second title line.
+    sub: &'a str,
+    name: &'a str,
+    base: &'a str,
+    x: &'a [f64],
+    y: &'a [f64],
+    v: &'a [Vec<f64>],
+    /// Depth downwards (the y axis reversed).
+    yflip: bool,
+    yname: &'a str,
+    /// Segments (m) drawn over the map: the stick zone's outline.
+    outline: &'a [[(f64, f64); 2]],
+}
+
+fn heat_map(m: &Map<'_>) -> PlotResult {
+    let (bx, by) = (block(m.x.len()), block(m.y.len()));
+    if bx > 1 || by > 1 {
+        let (x, y, v) = (coarse_axis(m.x, bx), coarse_axis(m.y, by), coarse_rows(m.v, by, bx));
+        let title = format!("{}, {bx} x {by} cell blocks", m.title);
+        return heat_map(&Map { title, x: &x, y: &y, v: &v, ..*m });
+    }
+    let (x, y, v) = (m.x, m.y, m.v);
+    let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
+    let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
+    let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
+    let (ya, yb) = (y[0] - 0.5 * hy, y[y.len() - 1] + 0.5 * hy);
+    let lu = Units::for_max(xa.abs().max(xb.abs()).max(ya.abs()).max(yb.abs()), "m");
+    let scale = Scale::of(v);
+    let vu = Units::for_max(scale.bounds().1, m.base);
+    let (pw, ph) = equal_axes(xb - xa, yb - ya);
+    // plot area + y labels (75) + margins; the colour bar takes 110 on the right.
+    // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
+    let (w, h) = ((pw + 75 + 24 + 110).max(720), ph + 60 + 45 + 24);
+    let mut s = String::new();
+    {
+        let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let root = titled(&root, &m.title, m.sub)?;
+        let (left, rest) = root.split_horizontally(pw + 75 + 24);
+        let (right, _) = rest.split_horizontally(110);
+        let (sxa, sxb, sya, syb) = (xa / lu.div, xb / lu.div, ya / lu.div, yb / lu.div);
+        let mut chart = ChartBuilder::on(&left)
+            .margin(12)
+            .x_label_area_size(45)
+            .y_label_area_size(75)
+            .build_cartesian_2d(sxa..sxb, if m.yflip { syb..sya } else { sya..syb })
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(lu.desc("x"))
+            .y_desc(lu.desc(m.yname))
+            .x_label_formatter(&|v| tick(*v, sxb - sxa))
+            .y_label_formatter(&|v| tick(*v, syb - sya))
+            .draw()
+            .map_err(err)?;
+        let cells = y
+            .iter()
+            .enumerate()
+            .flat_map(|(j, &yy)| x.iter().enumerate().map(move |(i, &xx)| (i, j, xx, yy)));
+        let d = lu.div;
+        chart
+            .draw_series(cells.map(|(i, j, xx, yy)| {
+                Rectangle::new(
+                    [
+                        ((xx - 0.5 * hx) / d, (yy - 0.5 * hy) / d),
+                        ((xx + 0.5 * hx) / d, (yy + 0.5 * hy) / d),
+                    ],
+                    scale.colour(v[j][i]).filled(),
+                )
+            }))
+            .map_err(err)?;
+        // Contours at the colour bar's round levels.
+        let (step, levels) =
+            contour::round_levels(scale.bounds().0 / vu.div, scale.bounds().1 / vu.div);
+        for &l in &levels {
+            for line in contour::iso_lines(x, y, v, l * vu.div) {
+                chart
+                    .draw_series(std::iter::once(PathElement::new(
+                        line.points.iter().map(|&(px, py)| (px / d, py / d)).collect::<Vec<_>>(),
+                        contour_style(),
+                    )))
+                    .map_err(err)?;
+            }
+        }
+        chart
+            .draw_series(m.outline.iter().map(|&[(x0, y0), (x1, y1)]| {
+                PathElement::new(vec![(x0 / d, y0 / d), (x1 / d, y1 / d)], WHITE.stroke_width(2))
+            }))
+            .map_err(err)?;
+        colour_bar(&right, scale, &vu, m.name, (step, &levels))?;
+        root.present().map_err(err)?;
+    }
+    Ok(s)
+}
+
+fn stick_map((title, sub): (&str, &str), x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
+    let (bx, by) = (block(x.len()), block(y.len()));
+    if bx > 1 || by > 1 {
+        // A block sticks if most of its contact elements stick; outside if it has none.
+        let merged: Vec<Vec<i8>> = stick
+            .chunks(bx)
+            .map(|cols| {
+                (0..y.len().div_ceil(by))
+                    .map(|jb| {
+                        let rows = jb * by..((jb + 1) * by).min(y.len());
+                        let (mut st, mut sl) = (0usize, 0usize);
+                        for c in cols {
+                            for v in &c[rows.clone()] {
+                                match v {
+                                    1 => st += 1,
+                                    0 => sl += 1,
+                                    _ => {}
+                                }
+                            }
+                        }
+                        if st + sl == 0 {
+                            -1
+                        } else {
+                            i8::from(st >= sl)
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        return stick_map((title, sub), &coarse_axis(x, bx), &coarse_axis(y, by), &merged);
+    }
+    let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
+    let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
+    let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
+    let (ya, yb) = (y[0] - 0.5 * hy, y[y.len() - 1] + 0.5 * hy);
+    let lu = Units::for_max(xa.abs().max(xb.abs()).max(ya.abs()).max(yb.abs()), "m");
+    let d = lu.div;
+    let (pw, ph) = equal_axes(xb - xa, yb - ya);
+    let mut s = String::new();
+    {
+        // At least 720 wide so that the title fits; the map keeps its equal scales on the left.
+        let root = SVGBackend::with_string(&mut s, ((pw + 75 + 24).max(720), ph + 60 + 45 + 24))
+            .into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let root = titled(&root, &format!("{title}: stick (blue), slip (red)"), sub)?;
+        let (root, _) = root.split_horizontally(pw + 75 + 24);
+        let (sxa, sxb, sya, syb) = (xa / d, xb / d, ya / d, yb / d);
+        let mut chart = ChartBuilder::on(&root)
+            .margin(12)
+            .x_label_area_size(45)
+            .y_label_area_size(75)
+            .build_cartesian_2d(sxa..sxb, sya..syb)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(lu.desc("x"))
+            .y_desc(lu.desc("y"))
+            .x_label_formatter(&|v| tick(*v, sxb - sxa))
+            .y_label_formatter(&|v| tick(*v, syb - sya))
+            .draw()
+            .map_err(err)?;
+        let cells = x.iter().enumerate().flat_map(|(i, &xx)| {
+            y.iter().enumerate().filter_map(move |(j, &yy)| {
+                let st = stick[i][j];
+                (st >= 0).then_some((xx, yy, st))
+            })
+        });
+        // Coarse grids show each element with a thin gap; fine ones edge to edge.
+        let half = if x.len().max(y.len()) > 40 { 0.5 } else { 0.45 };
+        chart
+            .draw_series(cells.map(|(xx, yy, st)| {
+                let c = if st == 1 { RGBColor(70, 110, 220) } else { RGBColor(220, 80, 60) };
+                Rectangle::new(
+                    [
+                        ((xx - half * hx) / d, (yy - half * hy) / d),
+                        ((xx + half * hx) / d, (yy + half * hy) / d),
+                    ],
+                    c.filled(),
+                )
+            }))
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    Ok(s)
+}
+
+/// `n` points from `a` to `b`.
+fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n).map(|k| a + (b - a) * k as f64 / (n - 1) as f64).collect()
+}
+
+/// A closed form sampled densely along x at the fixed y `y0`, as a dashed curve's data.
+fn sample(r: &reference::Reference, x0: f64, x1: f64, y0: f64) -> (Vec<f64>, Vec<f64>) {
+    let xs = linspace(x0, x1, 401);
+    let ys = xs.iter().map(|&x| (r.at)(x, y0)).collect();
+    (xs, ys)
+}
+
+/// Every plot of `out` as (file name, SVG text). Titles start with the scene's title, with
+/// the key parameters on a second line; the closed-form references of the planned scene
+/// (when `plan` is given) are drawn dashed.
+pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, String)>, String> {
+    let mut files = Vec::new();
+    let blue = RGBColor(40, 90, 200);
+    let red = RGBColor(200, 60, 40);
+    let grey = RGBColor(40, 40, 40);
+    let st = &out.title;
+    let sub = parameters::key_parameters(plan, out);
+    let sub = sub.as_str();
+    let refs = plan.map(|p| reference::of(p, out)).unwrap_or_default();
+    let x_m = ("x", "m");
+    match &out.surface {
+        SurfaceOut::Line { x, p, q, ux, uy, .. } if !x.is_empty() => {
+            let (x0, x1) = (x[0], x[x.len() - 1]);
+            let pref = refs.pressure.as_ref().map(|r| (r.label, sample(r, x0, x1, 0.0)));
+            let qref = refs.traction.as_ref().map(|r| (r.label, sample(r, x0, x1, 0.0)));
+            let mut curves = vec![Curve { dashed: false, label: "p", x, y: p, colour: blue }];
+            if let Some((label, (rx, ry))) = &pref {
+                curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+            }
+            files.push((
+                "pressure.svg".to_string(),
+                line_chart(
+                    (&format!("{st}: contact pressure"), sub),
+                    x_m,
+                    ("p", "Pa"),
+                    &curves,
+                    &[],
+                )?,
+            ));
+            let mut bands: Vec<(f64, f64, RGBColor)> =
+                out.zones.stick.iter().map(|z| (z[0], z[1], blue)).collect();
+            bands.extend(out.zones.slip.iter().map(|z| (z[0], z[1], red)));
+            let mut curves = vec![
+                Curve { dashed: false, label: "q", x, y: q, colour: red },
+                Curve { dashed: false, label: "p", x, y: p, colour: blue },
+            ];
+            if let Some((label, (rx, ry))) = &qref {
+                curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+            }
+            files.push((
+                "traction.svg".to_string(),
+                line_chart(
+                    (&format!("{st}: shear traction q (bands: stick blue, slip red)"), sub),
+                    x_m,
+                    ("p, q", "Pa"),
+                    &curves,
+                    &bands,
+                )?,
+            ));
+            files.push((
+                "stick_slip.svg".to_string(),
+                line_chart(
+                    (&format!("{st}: stick (blue) and slip (red) zones, |q|/p"), sub),
+                    x_m,
+                    ("|q| / p", ""),
+                    &[Curve {
+                        dashed: false,
+                        label: "|q|/p",
+                        x,
+                        y: &p
+                            .iter()
+                            .zip(q)
+                            .map(|(p, q)| if *p > 0.0 { q.abs() / p } else { 0.0 })
+                            .collect::<Vec<_>>(),
+                        colour: grey,
+                    }],
+                    &bands,
+                )?,
+            ));
+            if !ux.is_empty() {
+                files.push((
+                    "displacement.svg".to_string(),
+                    line_chart(
+                        (&format!("{st}: surface displacement of the substrate"), sub),
+                        x_m,
+                        ("u", "m"),
+                        &[
+                            Curve { dashed: false, label: "ux", x, y: ux, colour: red },
+                            Curve { dashed: false, label: "uy", x, y: uy, colour: blue },
+                        ],
+                        &[],
+                    )?,
+                ));
+            }
+        }
+        SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } if !x.is_empty() && !y.is_empty() => {
+            // fields are [j][i]; the grid is [i][j]: transpose for the heat map
+            let tr = |m: &Vec<Vec<f64>>| -> Vec<Vec<f64>> {
+                (0..y.len()).map(|j| (0..x.len()).map(|i| m[i][j]).collect()).collect()
+            };
+            let outline = stick_outline(x, y, stick);
+            let map = |title: String, name, v| Map {
+                title,
+                sub,
+                name,
+                base: "Pa",
+                x,
+                y,
+                v,
+                yflip: false,
+                yname: "y",
+                outline: &outline,
+            };
+            let pt = tr(p);
+            files.push((
+                "pressure.svg".to_string(),
+                heat_map(&map(format!("{st}: pressure p (white: stick zone outline)"), "p", &pt))?,
+            ));
+            let qmag: Vec<Vec<f64>> = (0..x.len())
+                .map(|i| (0..y.len()).map(|j| qx[i][j].hypot(qy[i][j])).collect())
+                .collect();
+            let qt = tr(&qmag);
+            files.push((
+                "traction.svg".to_string(),
+                heat_map(&map(
+                    format!("{st}: traction |q| (white: stick zone outline)"),
+                    "|q|",
+                    &qt,
+                ))?,
+            ));
+            files.push(("stick_slip.svg".to_string(), stick_map((st, sub), x, y, stick)?));
+            // Sections along x through the row nearest the centre, beside the closed forms
+            // evaluated on that same row.
+            let j0 = (0..y.len()).min_by(|&a, &b| y[a].abs().total_cmp(&y[b].abs())).unwrap_or(0);
+            let (x0, x1, y0) = (x[0], x[x.len() - 1], y[j0]);
+            let at = format!("section y = {}", eng_near(y0, x1.abs().max(x0.abs()), 1e-10, "m"));
+            for (file, name, row, r) in [
+                ("pressure_section.svg", "p", &pt[j0], refs.pressure.as_ref()),
+                ("traction_section.svg", "|q|", &qt[j0], refs.traction.as_ref()),
+            ] {
+                if name == "|q|" && row.iter().all(|v| *v == 0.0) {
+                    continue;
+                }
+                let reference = r.map(|r| (r.label, sample(r, x0, x1, y0)));
+                let mut curves =
+                    vec![Curve { dashed: false, label: name, x, y: row, colour: blue }];
+                if let Some((label, (rx, ry))) = &reference {
+                    curves.push(Curve { dashed: true, label, x: rx, y: ry, colour: grey });
+                }
+                files.push((
+                    file.to_string(),
+                    line_chart(
+                        (&format!("{st}: {name}, {at}"), sub),
+                        x_m,
+                        (name, "Pa"),
+                        &curves,
+                        &[],
+                    )?,
+                ));
+            }
+        }
+        _ => {}
+    }
+    let f = out.field.plane();
+    if !f.x.is_empty() && !f.y.is_empty() {
+        for (name, v) in [("sxx", &f.sxx), ("syy", &f.syy), ("sxy", &f.sxy)] {
+            files.push((
+                format!("field_{name}.svg"),
+                heat_map(&Map {
+                    title: format!("{st}: subsurface {name}"),
+                    sub,
+                    name,
+                    base: "Pa",
+                    x: &f.x,
+                    y: &f.y,
+                    v,
+                    yflip: true,
+                    yname: "depth y",
+                    outline: &[],
+                })?,
+            ));
+        }
+    }
+    if let Some(v) = out.field.volume() {
+        let a = &v.arrays;
+        let (nx, ny, nz) = (v.x.len(), v.y.len(), v.z.len());
+        let (i0, j0) = (nx / 2, ny / 2);
+        for (name, data) in [
+            ("von_mises", &a.von_mises),
+            ("tresca", &a.tresca),
+            ("max_principal", &a.max_principal),
+            ("szz", &a.szz),
+        ] {
+            if nx > 1 && nz > 1 {
+                let rows: Vec<Vec<f64>> = (0..nz)
+                    .map(|k| (0..nx).map(|i| data[(k * ny + j0) * nx + i]).collect())
+                    .collect();
+                files.push((
+                    format!("field_{name}_xz.svg"),
+                    heat_map(&Map {
+                        title: format!(
+                            "{st}: {name}, section y = {}",
+                            eng_near(v.y[j0], v.x[0].abs().max(v.x[nx - 1].abs()), 1e-10, "m")
+                        ),
+                        sub,
+                        name,
+                        base: "Pa",
+                        x: &v.x,
+                        y: &v.z,
+                        v: &rows,
+                        yflip: true,
+                        yname: "depth z",
+                        outline: &[],
+                    })?,
+                ));
+            }
+            if ny > 1 && nz > 1 {
+                let rows: Vec<Vec<f64>> = (0..nz)
+                    .map(|k| (0..ny).map(|j| data[(k * ny + j) * nx + i0]).collect())
+                    .collect();
+                files.push((
+                    format!("field_{name}_yz.svg"),
+                    heat_map(&Map {
+                        title: format!(
+                            "{st}: {name}, section x = {}",
+                            eng_near(v.x[i0], v.y[0].abs().max(v.y[ny - 1].abs()), 1e-10, "m")
+                        ),
+                        sub,
+                        name,
+                        base: "Pa",
+                        x: &v.y,
+                        y: &v.z,
+                        v: &rows,
+                        yflip: true,
+                        yname: "depth z",
+                        outline: &[],
+                    })?,
+                ));
+            }
+        }
+    }
+    if let Some(c) = &out.cycle {
+        let mut curves =
+            vec![Curve { dashed: false, label: "result", x: &c.delta, y: &c.t, colour: blue }];
+        if let Some((rx, ry)) = &refs.cycle {
+            curves.push(Curve {
+                dashed: true,
+                label: "Mindlin-Deresiewicz",
+                x: rx,
+                y: ry,
+                colour: grey,
+            });
+        }
+        files.push((
+            "cycle.svg".to_string(),
+            line_chart(
+                (&format!("{st}: hysteresis loop"), sub),
+                ("relative displacement", "m"),
+                ("T", "N"),
+                &curves,
+                &[],
+            )?,
+        ));
+    }
+    Ok(files)
+}

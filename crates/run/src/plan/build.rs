@@ -1,0 +1,860 @@
+//! The planner's decisions: the recipe (which method serves each stage), the effects with
+//! their reasons, the notes. Refusals come first ([`super::checks`]), the cost estimate
+//! last ([`super::cost`]).
+
+use std::f64::consts::PI;
+
+use stickslip_graded::{Accuracy, GradedMaterial};
+use stickslip_halfspace::hertz::HertzSphere;
+use stickslip_halfspace::material::{composite_modulus, dundurs_beta};
+use stickslip_halfspace::Material;
+use stickslip_normal::NormalProblem;
+use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
+use stickslip_traction::{FastConfig, ModifiedLp};
+
+use super::checks::{self, invalid, tolerance_for};
+use super::cost::{self, lattice_elements};
+use super::recipe::{
+    ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, Creepage, CycleRecipe, Force,
+    GridMethod, GridStep, LineDisplacements, LineField, LineFieldMethod, LineFriction, LineLoad,
+    LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod, RollingModel, RollingRecipe,
+    RollingStep, SurfaceLoad, Tangential,
+};
+use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
+use stickslip_scene::ErrorKind;
+use stickslip_scene::{
+    Elastic, Ellipse, Geometry, Indenter, Method, Motion, NormalLoad, Patch, Scene, Substrate,
+    Surface, SurfaceBoundary,
+};
+
+/// Plan `scene`: refuse what no solver handles, choose the method of every stage, explain
+/// each effect, estimate the cost.
+pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
+    checks::refuse(scene)?;
+    let mut notes = Vec::new();
+    let visco = visco(scene);
+    let rolling = matches!(scene.motion, Motion::Rolling { .. });
+    if visco == Some(false) && !rolling {
+        notes.push("alpha = beta: the standard solid is elastic with modulus E; solved as a homogeneous elastic body".to_string());
+    }
+    let (recipe, grid_reason) = match (&scene.geometry, scene.motion) {
+        (Geometry::Cylinder { radius }, Motion::Rolling { speed, creep }) => {
+            (Recipe::Rolling(rolling_recipe(scene, *radius, speed, creep)?), None)
+        }
+        (Geometry::Cylinder { radius }, Motion::Static) => {
+            (Recipe::Line(line_recipe(scene, LineBody::Cylinder(*radius))?), None)
+        }
+        (Geometry::Punch { half_width }, Motion::Static) => {
+            (Recipe::Line(line_recipe(scene, LineBody::Punch(*half_width))?), None)
+        }
+        (_, Motion::Rolling { .. }) => {
+            return Err(checks::unsupported(
+                "geometry.kind",
+                "rolling needs a cylinder",
+                "use geometry.kind = \"cylinder\"",
+            ))
+        }
+        (Geometry::Sphere { radius }, Motion::Static | Motion::RollingCreepage { .. }) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Sphere(*radius))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+        (Geometry::Ellipsoid(e), Motion::Static | Motion::RollingCreepage { .. }) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Ellipsoid(*e))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+        (Geometry::Patches(ps), Motion::Static) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Patches(ps))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+        (Geometry::Surface(s), Motion::Static | Motion::RollingCreepage { .. }) => {
+            let (r, reason) = contact_recipe(scene, ContactBody::Surface(s))?;
+            (Recipe::Contact(r), Some(reason))
+        }
+        (_, Motion::RollingCreepage { .. }) => {
+            return Err(checks::unsupported(
+                "geometry.kind",
+                "3D rolling with creepage needs a sphere, an ellipsoid or a surface (a cylinder rolls in 2D: use motion.creep)",
+                "use geometry.kind = \"ellipsoid\" (radii), \"sphere\" or \"surface\"",
+            ))
+        }
+    };
+    let effects = effects(scene, &recipe, &mut notes);
+    let grid_solver = match &recipe {
+        Recipe::Contact(ContactRecipe { tangential: Some(Tangential::Grid(_)), .. }) => grid_reason,
+        _ => None,
+    };
+    let (surface_points, grid_elements, cost) = cost::estimate(scene, &effects)?;
+    checks::capacity(scene)?;
+    checks::lattice(scene)?;
+    checks::spin(scene)?;
+    Ok(Plan {
+        title: scene.title.clone(),
+        file: scene.file.clone(),
+        source: scene.source.clone(),
+        effects,
+        surface_points,
+        grid_elements,
+        grid_solver,
+        cost,
+        notes,
+        recipe,
+    })
+}
+
+/// Whether the substrate is viscoelastic: `Some(true)` when alpha != beta, `Some(false)`
+/// when the standard solid is elastic (alpha = beta), `None` for other substrates.
+fn visco(scene: &Scene) -> Option<bool> {
+    match scene.substrate {
+        Substrate::Viscoelastic { alpha, beta, .. } => Some(alpha != beta),
+        _ => None,
+    }
+}
+
+fn graded_k(scene: &Scene) -> Option<f64> {
+    match scene.substrate {
+        Substrate::Graded { k, .. } => Some(k),
+        _ => None,
+    }
+}
+
+fn elastic(e: Elastic, key: &'static str) -> Result<Material, Issue> {
+    Material::new(e.e, e.nu).map_err(|er| invalid(key, er))
+}
+
+/// The substrate as a homogeneous material (graded k = 0: E = e0; viscoelastic: the
+/// long-time E).
+pub(crate) fn substrate_material(s: &Substrate) -> Result<Material, Issue> {
+    match *s {
+        Substrate::Homogeneous(e) => elastic(e, "substrate.e"),
+        Substrate::Graded { e0, nu, .. } => elastic(Elastic { e: e0, nu }, "substrate.e0"),
+        Substrate::Viscoelastic { elastic: e, .. } => elastic(e, "substrate.e"),
+    }
+}
+
+pub(crate) fn indenter_material(scene: &Scene, sub: &Material) -> Result<Material, Issue> {
+    match scene.indenter {
+        Indenter::Rigid => Ok(Material::rigid()),
+        Indenter::Same => Ok(*sub),
+        Indenter::Homogeneous(e) => elastic(e, "indenter.e"),
+    }
+}
+
+pub(crate) fn identical_materials(scene: &Scene) -> bool {
+    match (scene.indenter, scene.substrate) {
+        (Indenter::Same, _) => true,
+        (Indenter::Homogeneous(i), Substrate::Homogeneous(s)) => i == s,
+        (Indenter::Homogeneous(i), Substrate::Viscoelastic { elastic, .. }) => i == elastic,
+        _ => false,
+    }
+}
+
+/// Whether an ellipse load direction lies along one of the axes (the Cattaneo closed form).
+pub(crate) fn along_axis(deg: f64) -> bool {
+    let r = deg.rem_euclid(90.0);
+    r.min(90.0 - r) < 1e-9
+}
+
+fn approach_refused() -> Issue {
+    Issue::new(
+        ErrorKind::Schema,
+        "load.approach",
+        "the approach (displacement control) is for geometry.kind = \"surface\"",
+    )
+    .hint("give load.normal = P")
+}
+
+fn half_width_refused() -> Issue {
+    Issue::new(
+        ErrorKind::Schema,
+        "load.half_width",
+        "this geometry takes the normal load, not a half-width",
+    )
+    .hint("give load.normal = P")
+}
+
+// ---------------------------------------------------------------------------------------
+// 2D static
+
+/// The body of a line contact.
+#[derive(Clone, Copy)]
+enum LineBody {
+    /// A cylinder of this radius (m).
+    Cylinder(f64),
+    /// A flat punch of this half-width (m).
+    Punch(f64),
+}
+
+fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
+    let l = &scene.load;
+    let k = graded_k(scene);
+    let grading = k.is_some_and(|k| k > 0.0);
+    let sub = substrate_material(&scene.substrate)?;
+    let line_load = match l.normal {
+        NormalLoad::HalfWidth(a) => LineLoad::HalfWidth(a),
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) => LineLoad::Force(p),
+        NormalLoad::Approach(_) => return Err(approach_refused()),
+    };
+    let graded_material = match scene.substrate {
+        Substrate::Graded { e0, k, nu } if k > 0.0 => {
+            Some(GradedMaterial::new(e0, k, nu).map_err(|e| invalid("substrate.k", e))?)
+        }
+        _ => None,
+    };
+    let normal = match (body, graded_material) {
+        (LineBody::Punch(half_width), _) => match line_load {
+            LineLoad::Force(force) => LineNormal::Punch { half_width, force },
+            LineLoad::HalfWidth(_) => return Err(half_width_refused()),
+        },
+        (LineBody::Cylinder(radius), Some(material)) => {
+            LineNormal::Graded { radius, load: line_load, material }
+        }
+        (LineBody::Cylinder(radius), None) => LineNormal::Hertz {
+            radius,
+            load: line_load,
+            substrate: sub,
+            indenter: indenter_material(scene, &sub)?,
+        },
+    };
+    let f = l.friction;
+    let friction = if f > 0.0 && (l.tangential != 0.0 || l.sliding) {
+        Some(if l.sliding {
+            LineFriction::Sliding { friction: f }
+        } else if grading {
+            LineFriction::GradedPartialSlip { friction: f, tangential: l.tangential }
+        } else {
+            LineFriction::Cattaneo { friction: f, tangential: l.tangential }
+        })
+    } else {
+        None
+    };
+    let field = match scene.outputs.field {
+        Some(grid) => {
+            let punch = matches!(normal, LineNormal::Punch { .. });
+            let method = if grading || punch || scene.solver.method == Method::Quadrature {
+                let material = match (normal, graded_material) {
+                    (_, Some(m)) => m,
+                    _ => GradedMaterial::new(sub.youngs_modulus(), 0.0, sub.poisson_ratio())
+                        .map_err(|e| invalid("substrate.e", e))?,
+                };
+                LineFieldMethod::Quadrature { material, accuracy: graded_accuracy(scene)? }
+            } else {
+                LineFieldMethod::McEwen
+            };
+            Some(LineField { grid, method })
+        }
+        None => None,
+    };
+    let surface = if scene.outputs.surface {
+        let displacements = match normal {
+            LineNormal::Hertz { substrate, .. } => LineDisplacements::Homogeneous { substrate },
+            LineNormal::Graded { material, .. } => {
+                LineDisplacements::Graded { material, accuracy: graded_accuracy(scene)? }
+            }
+            LineNormal::Punch { .. } => LineDisplacements::None,
+        };
+        Some(LineSurface { points: SURFACE_POINTS, displacements })
+    } else {
+        None
+    };
+    Ok(LineRecipe { normal, friction_coefficient: f, friction, surface, field })
+}
+
+fn graded_accuracy(scene: &Scene) -> Result<Accuracy, Issue> {
+    let t = tolerance_for(scene, "the graded-kernel quadrature", Accuracy::TOLERANCE_RANGE)?;
+    let t = stickslip_graded::Tolerance::relative(t).map_err(|e| invalid("solver.tolerance", e))?;
+    Accuracy::new(t).map_err(|e| invalid("solver.tolerance", e))
+}
+
+// ---------------------------------------------------------------------------------------
+// rolling
+
+fn rolling_recipe(
+    scene: &Scene,
+    radius: f64,
+    speed: f64,
+    creep: f64,
+) -> Result<RollingRecipe, Issue> {
+    let NormalLoad::Force(load) = scene.load.normal else {
+        return Err(checks::unsupported(
+            "load.half_width",
+            "rolling takes the normal load; the contact length follows from it",
+            "give load.normal = P (N/m)",
+        ));
+    };
+    let friction = scene.load.friction;
+    let model = match scene.substrate {
+        Substrate::Viscoelastic { elastic: el, alpha, beta } => {
+            let tol = tolerance_for(
+                scene,
+                "the rolling stress quadrature",
+                StressConfig::TOLERANCE_RANGE,
+            )?;
+            let params = GoryachevaParams::new(
+                el.e, el.nu, radius, load, friction, creep, alpha, beta, speed,
+            )
+            .map_err(|e| invalid("substrate", e))?;
+            RollingModel::Goryacheva {
+                params,
+                stress: StressConfig {
+                    tol: stickslip_rolling::Tolerance::relative(tol)
+                        .map_err(|e| invalid("solver.tolerance", e))?,
+                    max_subdivisions: 200,
+                },
+                viscoelastic: alpha != beta,
+            }
+        }
+        Substrate::Homogeneous(el) => RollingModel::Carter(
+            CarterParams::new(el.e, el.nu, radius, load, friction, creep)
+                .map_err(|e| invalid("substrate", e))?,
+        ),
+        Substrate::Graded { .. } => {
+            return Err(checks::unsupported(
+                "motion.kind",
+                "rolling is solved for homogeneous (Carter) and viscoelastic (Goryacheva) bodies, not graded ones",
+                "use motion.kind = \"static\", or a homogeneous / viscoelastic substrate",
+            ))
+        }
+    };
+    Ok(RollingRecipe { model, surface_points: scene.outputs.surface.then_some(SURFACE_POINTS) })
+}
+
+// ---------------------------------------------------------------------------------------
+// 3D static
+
+/// The grid solver for 3D partial slip without a closed form, and why: what
+/// `solver.method` asks for, or under `"auto"` the modified LP up to
+/// [`super::MAX_LP_ELEMENTS`] contact elements (exact for its discretisation, seed 002) and
+/// the fast solver beyond it or when a force and a moment act together (the LP takes one
+/// load mode). True for the fast solver.
+fn grid_solver(method: Method, elements: usize, both: bool) -> (bool, String) {
+    use super::MAX_LP_ELEMENTS;
+    match method {
+        Method::Lp => (false, "solver.method = \"lp\"".to_string()),
+        Method::Fast => (true, "solver.method = \"fast\"".to_string()),
+        _ if both => (
+            true,
+            "a tangential force and a twisting moment act together; the LP takes one load mode: the fast solver".to_string(),
+        ),
+        _ if elements > MAX_LP_ELEMENTS => (
+            true,
+            format!("about {elements} contact elements > {MAX_LP_ELEMENTS}, the dense LP's limit: the fast solver"),
+        ),
+        _ => (
+            false,
+            format!("about {elements} contact elements <= {MAX_LP_ELEMENTS}: the modified LP (exact for its discretisation, seed 002)"),
+        ),
+    }
+}
+
+/// The 3D steady-rolling step: the theory from `solver.method`, or under `"auto"` from the
+/// tolerance (the accuracy knob): Polach's law when the tolerance admits its measured force
+/// error and there is no spin, FASTSIM when it admits FASTSIM's, else the exact theory.
+fn rolling_step(
+    scene: &Scene,
+    body: ContactBody<'_>,
+    speed: f64,
+    creepage: Creepage,
+) -> Result<Tangential, Issue> {
+    use stickslip_rolling::{
+        steady3d::FASTSIM_FORCE_ERROR, steady3d::POLACH_FORCE_ERROR, steady3d::TOLERANCE_RANGE,
+    };
+    let l = &scene.load;
+    if l.friction <= 0.0 {
+        return Err(checks::unsupported(
+            "load.friction",
+            "rolling with creepage needs a friction coefficient: without friction no creep force arises",
+            "give load.friction, e.g. friction = 0.3",
+        ));
+    }
+    if l.tangential != 0.0 || l.moment != 0.0 || l.sliding {
+        return Err(checks::unsupported(
+            "load.tangential",
+            "in steady rolling the creep forces and spin moment follow from the creepages; a tangential load, a moment or sliding cannot also be prescribed",
+            "remove load.tangential, load.moment and load.sliding; set motion.creepage instead",
+        ));
+    }
+    let ellipse = matches!(body, ContactBody::Sphere(_) | ContactBody::Ellipsoid(_));
+    let needs_ellipse = |name: &str| {
+        checks::unsupported(
+            "solver.method",
+            format!("{name} needs a Hertz ellipse (its parameters come from Kalker's coefficients of an elliptical contact)"),
+            "use method = \"auto\" or \"fast\" (the exact theory), which rolls any surface",
+        )
+    };
+    let tol = scene.solver.tolerance;
+    let method = match scene.solver.method {
+        Method::Fastsim if !ellipse => return Err(needs_ellipse("FASTSIM")),
+        Method::Fastsim => RollingMethod::Fastsim,
+        Method::Polach if !ellipse => return Err(needs_ellipse("Polach's law")),
+        Method::Polach if creepage.spin != 0.0 => {
+            return Err(checks::unsupported(
+                "motion.creepage.spin",
+                "Polach's creep-force law has no spin",
+                "use method = \"fastsim\" or \"auto\", or remove the spin",
+            ))
+        }
+        Method::Polach => RollingMethod::Polach,
+        Method::Fast => RollingMethod::Exact,
+        Method::Auto if ellipse && creepage.spin == 0.0 && tol >= POLACH_FORCE_ERROR => {
+            RollingMethod::Polach
+        }
+        Method::Auto if ellipse && tol >= FASTSIM_FORCE_ERROR => RollingMethod::Fastsim,
+        Method::Auto => RollingMethod::Exact,
+        _ => {
+            return Err(checks::unsupported(
+                "solver.method",
+                "3D rolling is solved by the exact theory (\"fast\"), FASTSIM (\"fastsim\") or Polach's law (\"polach\")",
+                "use method = \"auto\"",
+            ))
+        }
+    };
+    if method == RollingMethod::Polach && scene.outputs.field.is_some() {
+        return Err(checks::unsupported(
+            "outputs.field",
+            "Polach's law gives forces only, no traction distribution to compute stresses from",
+            "use method = \"fastsim\" or \"fast\" for subsurface stresses under rolling",
+        ));
+    }
+    let tolerance = if method == RollingMethod::Exact {
+        tolerance_for(scene, "the exact steady-rolling solver", TOLERANCE_RANGE)?
+    } else {
+        tol
+    };
+    Ok(Tangential::Rolling(RollingStep { method, creepage, speed, tolerance }))
+}
+
+/// The body of a 3D contact.
+#[derive(Clone, Copy)]
+enum ContactBody<'a> {
+    Sphere(f64),
+    Ellipsoid(Ellipse),
+    Patches(&'a [Patch]),
+    Surface(&'a Surface),
+}
+
+fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe, String), Issue> {
+    let l = &scene.load;
+    let sub = substrate_material(&scene.substrate)?;
+    let ind = indenter_material(scene, &sub)?;
+    let e_star = composite_modulus(&sub, &ind);
+    let force_of = || match l.normal {
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) => Ok(p),
+        NormalLoad::HalfWidth(_) => Err(half_width_refused()),
+        NormalLoad::Approach(_) => Err(approach_refused()),
+    };
+    let normal = match body {
+        ContactBody::Sphere(radius) => {
+            let force = match l.normal {
+                NormalLoad::Force(p) | NormalLoad::FromPatches(p) => p,
+                NormalLoad::HalfWidth(a) => HertzSphere::load_for_contact_radius(a, radius, e_star),
+                NormalLoad::Approach(_) => return Err(approach_refused()),
+            };
+            ContactNormal::Sphere { radius, force, e_star }
+        }
+        ContactBody::Ellipsoid(Ellipse::Radii { rx, ry }) => {
+            ContactNormal::Ellipse { rx, ry, force: force_of()?, e_star }
+        }
+        ContactBody::Ellipsoid(Ellipse::SemiAxes { a, b }) => {
+            ContactNormal::EllipseGiven { a, b, force: force_of()? }
+        }
+        ContactBody::Patches(ps) => ContactNormal::Patches(ps.to_vec()),
+        ContactBody::Surface(s) => {
+            let load = match l.normal {
+                NormalLoad::Approach(d) => SurfaceLoad::Approach(d),
+                NormalLoad::HalfWidth(_) => return Err(half_width_refused()),
+                NormalLoad::Force(p) | NormalLoad::FromPatches(p) => SurfaceLoad::Force(p),
+            };
+            checks::periodic_surface(scene)?;
+            let tolerance =
+                tolerance_for(scene, "the normal-contact solver", NormalProblem::TOLERANCE_RANGE)?;
+            ContactNormal::Surface {
+                surface: Box::new(s.clone()),
+                load,
+                tolerance,
+                sweep: l.normal_sweep,
+            }
+        }
+    };
+    let method = scene.solver.method;
+    let both = l.tangential != 0.0 && l.moment != 0.0;
+    let elements = lattice_elements(scene);
+    // Dissimilar bodies on a surface with friction carrying a force or moment: the normal
+    // and tangential problems are solved together (Dundurs coupling), with the fast solver.
+    let beta = dundurs_beta(&sub, &ind);
+    let periodic = matches!(&normal, ContactNormal::Surface { surface, .. } if surface.boundary == SurfaceBoundary::Periodic);
+    let couple = matches!(normal, ContactNormal::Surface { .. })
+        && beta != 0.0
+        && l.friction > 0.0
+        && !l.sliding
+        && (l.tangential != 0.0 || l.moment != 0.0)
+        && !matches!(scene.motion, Motion::RollingCreepage { .. } | Motion::Rolling { .. })
+        && method != Method::Lp;
+    if couple && l.normal_sweep.is_some() {
+        return Err(checks::unsupported(
+            "load.normal",
+            format!("a load sweep between dissimilar bodies (Dundurs beta = {beta:.4}) with a tangential load is not solved in this version (the coupled solve runs at one load)"),
+            "give one normal load, or remove the tangential load for the sweep",
+        ));
+    }
+    let (fast, grid_reason) = if couple && method != Method::Fast {
+        (
+            true,
+            format!("dissimilar bodies on a surface (Dundurs beta = {beta:.4}): the coupled normal-tangential solve uses the fast solver"),
+        )
+    } else if periodic {
+        (true, "a periodic surface: the fast solver with its periodic operator".to_string())
+    } else {
+        grid_solver(method, elements, both)
+    };
+    let closed_ok = !matches!(method, Method::Lp | Method::Fast);
+    let force = {
+        let angle = l.direction_deg.to_radians();
+        let (direction, magnitude) =
+            if l.tangential < 0.0 { (angle + PI, -l.tangential) } else { (angle, l.tangential) };
+        Force { signed: l.tangential, magnitude, direction }
+    };
+    let f = l.friction;
+    let direction = force.direction;
+    let grid_step = |method,
+                     force: Option<Force>,
+                     moment: Option<f64>|
+     -> Result<Tangential, Issue> {
+        let tolerance = match method {
+            GridMethod::Fast => {
+                tolerance_for(scene, "the fast solver", FastConfig::TOLERANCE_RANGE)?
+            }
+            GridMethod::Lp => tolerance_for(scene, "the modified LP", ModifiedLp::TOLERANCE_RANGE)?,
+        };
+        Ok(Tangential::Grid(GridStep { method, force, direction, moment, tolerance }))
+    };
+    let rolling = match scene.motion {
+        Motion::RollingCreepage { speed, longitudinal, lateral, spin } => {
+            Some(rolling_step(scene, body, speed, Creepage { longitudinal, lateral, spin })?)
+        }
+        _ => None,
+    };
+    let tangential = if rolling.is_some() {
+        rolling
+    } else if f > 0.0 && (l.tangential != 0.0 || l.sliding || l.moment != 0.0) {
+        Some(if l.sliding {
+            Tangential::Sliding { angle: l.direction_deg.to_radians() }
+        } else if l.tangential == 0.0 {
+            // a moment alone
+            match body {
+                ContactBody::Sphere(_) if closed_ok => Tangential::Lubkin { moment: l.moment },
+                _ if fast => grid_step(GridMethod::Fast, None, Some(l.moment))?,
+                _ => grid_step(GridMethod::Lp, None, Some(l.moment))?,
+            }
+        } else {
+            match body {
+                ContactBody::Sphere(_) if closed_ok && !both => Tangential::Mindlin { force },
+                ContactBody::Ellipsoid(_) if closed_ok && !both && along_axis(l.direction_deg) => {
+                    // along x when the direction is within 45 degrees of the x axis
+                    let d = l.direction_deg.rem_euclid(180.0);
+                    Tangential::Cattaneo { force, along_x: d.min(180.0 - d) < 45.0 }
+                }
+                _ if fast => {
+                    grid_step(GridMethod::Fast, Some(force), (l.moment != 0.0).then_some(l.moment))?
+                }
+                _ => grid_step(GridMethod::Lp, Some(force), None)?,
+            }
+        })
+    } else {
+        None
+    };
+    let lattice_output = scene.outputs.surface
+        || matches!(tangential, Some(Tangential::Grid(_) | Tangential::Rolling(_)))
+        || scene.outputs.field.is_some();
+    let cycle =
+        scene.outputs.cycle.map(|c| CycleRecipe { amplitude: c.amplitude, points: c.points });
+    let field = match scene.outputs.field {
+        Some(grid) => {
+            let frictionless = tangential.is_none();
+            let sliding = match tangential {
+                Some(Tangential::Sliding { angle }) => Some(angle),
+                _ => None,
+            };
+            let method = match (&normal, frictionless, sliding) {
+                _ if scene.solver.method == Method::Fast => ContactFieldMethod::Lattice,
+                (ContactNormal::Sphere { .. }, true, _) => ContactFieldMethod::HertzSphere,
+                (
+                    ContactNormal::Sphere { .. }
+                    | ContactNormal::Ellipse { .. }
+                    | ContactNormal::EllipseGiven { .. },
+                    false,
+                    Some(angle),
+                ) => ContactFieldMethod::HertzSliding { friction: f, angle },
+                (ContactNormal::Ellipse { .. } | ContactNormal::EllipseGiven { .. }, true, _) => {
+                    ContactFieldMethod::HertzEllipse
+                }
+                _ => ContactFieldMethod::Lattice,
+            };
+            checks::field_box(scene, &normal, grid)?;
+            Some(ContactField { grid, method, nu: sub.poisson_ratio() })
+        }
+        None => None,
+    };
+    Ok((
+        ContactRecipe {
+            normal,
+            bodies: [sub, ind],
+            identical: identical_materials(scene),
+            grid: scene.solver.grid,
+            friction: f,
+            tangential,
+            cycle,
+            lattice_output,
+            field,
+            coupling: (couple
+                && matches!(
+                    tangential,
+                    Some(Tangential::Grid(GridStep { method: GridMethod::Fast, .. }))
+                ))
+            .then_some(beta),
+        },
+        grid_reason,
+    ))
+}
+
+// ---------------------------------------------------------------------------------------
+// effects
+
+impl Recipe {
+    /// The technique of the normal-contact stage.
+    pub fn normal_technique(&self) -> Technique {
+        match self {
+            Recipe::Line(r) => match r.normal {
+                LineNormal::Hertz { .. } => Technique::HertzLine,
+                LineNormal::Graded { .. } => Technique::GradedCylinder,
+                LineNormal::Punch { .. } => Technique::FlatPunch,
+            },
+            Recipe::Rolling(r) => r.model.technique(),
+            Recipe::Contact(r) => match r.normal {
+                ContactNormal::Sphere { .. } => Technique::HertzSphere,
+                ContactNormal::Ellipse { .. } => Technique::HertzEllipse,
+                ContactNormal::EllipseGiven { .. } => Technique::EllipseGiven,
+                ContactNormal::Patches(_) => Technique::PatchPressure,
+                ContactNormal::Surface { .. } => Technique::SurfaceContact,
+            },
+        }
+    }
+
+    /// The technique of the friction stage, when there is one.
+    pub fn friction_technique(&self) -> Option<Technique> {
+        match self {
+            Recipe::Line(r) => r.friction.map(|f| match f {
+                LineFriction::Sliding { .. } => Technique::Sliding,
+                LineFriction::Cattaneo { .. } => Technique::Cattaneo2d,
+                LineFriction::GradedPartialSlip { .. } => Technique::GradedPartialSlip,
+            }),
+            Recipe::Rolling(r) => Some(r.model.technique()),
+            Recipe::Contact(r) => r.tangential.map(|t| t.technique()),
+        }
+    }
+}
+
+impl RollingModel {
+    /// Carter or Goryacheva.
+    pub fn technique(&self) -> Technique {
+        match self {
+            RollingModel::Carter(_) => Technique::Carter,
+            RollingModel::Goryacheva { viscoelastic: true, .. } => Technique::Goryacheva,
+            // alpha = beta is solved by Goryacheva's equations, reported as Carter's case
+            RollingModel::Goryacheva { viscoelastic: false, .. } => Technique::Carter,
+        }
+    }
+}
+
+impl Tangential {
+    /// The technique of this step.
+    pub fn technique(&self) -> Technique {
+        match self {
+            Tangential::Sliding { .. } => Technique::Sliding,
+            Tangential::Mindlin { .. } => Technique::Mindlin,
+            Tangential::Cattaneo { .. } => Technique::Cattaneo,
+            Tangential::Lubkin { .. } => Technique::Lubkin,
+            Tangential::Rolling(r) => match r.method {
+                RollingMethod::Fastsim => Technique::Fastsim,
+                RollingMethod::Polach => Technique::Polach,
+                _ => Technique::SteadyRolling,
+            },
+            Tangential::Grid(GridStep { method: GridMethod::Fast, .. }) => Technique::Fast,
+            Tangential::Grid(GridStep { method: GridMethod::Lp, force: None, .. }) => {
+                Technique::LpMoment
+            }
+            Tangential::Grid(GridStep { method: GridMethod::Lp, .. }) => Technique::LpForce,
+        }
+    }
+}
+
+fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<EffectPlan> {
+    use Effect as E;
+    let l = &scene.load;
+    let on = |effect, reason: String, t: Technique| EffectPlan {
+        effect,
+        on: true,
+        reason,
+        technique: Some(t),
+    };
+    let off = |effect, reason: String| EffectPlan { effect, on: false, reason, technique: None };
+    let mut effects: Vec<EffectPlan> = Vec::with_capacity(8);
+    effects.push(on(E::NormalContact, "always".to_string(), recipe.normal_technique()));
+
+    let rolling = matches!(scene.motion, Motion::Rolling { .. } | Motion::RollingCreepage { .. });
+    let f = l.friction;
+    let friction_cause = if l.tangential != 0.0 {
+        Some("a tangential load")
+    } else if l.sliding {
+        Some("sliding = true")
+    } else if l.moment != 0.0 {
+        Some("a twisting moment")
+    } else if rolling {
+        Some("rolling")
+    } else {
+        None
+    };
+    match (recipe.friction_technique(), friction_cause) {
+        (Some(t), Some(cause)) => {
+            if t == Technique::Cattaneo2d && !identical_materials(scene) {
+                notes.push("2D Cattaneo-Mindlin neglects the coupling of normal and tangential tractions; exact for identical materials only (Dundurs beta = 0)".to_string());
+            }
+            if t == Technique::GradedPartialSlip {
+                notes.push("graded partial slip: the stick zone is where the q-induced u_x is uniform; the pressure-induced odd part of u_x (FORMULAS.md A5) is neglected, as in Cattaneo-Mindlin".to_string());
+            }
+            if matches!(t, Technique::Mindlin | Technique::Cattaneo | Technique::Lubkin)
+                && !identical_materials(scene)
+            {
+                notes.push("Mindlin/Cattaneo/Lubkin neglect normal-tangential coupling (exact for identical materials)".to_string());
+            }
+            let mut reason = format!("f = {f} > 0 with {cause}");
+            if let Recipe::Contact(c) = recipe {
+                let surface = matches!(c.normal, ContactNormal::Surface { .. });
+                let grid = matches!(c.tangential, Some(Tangential::Grid(_)));
+                if grid && c.coupling.is_none() && !c.identical {
+                    let beta = dundurs_beta(&c.bodies[0], &c.bodies[1]);
+                    if beta != 0.0 {
+                        notes.push(if surface {
+                            format!("the modified LP neglects the normal-tangential coupling (Dundurs beta = {beta:.4}); solver.method = \"fast\" or \"auto\" solves it")
+                        } else {
+                            format!("the grid solver on a closed-form pressure neglects the normal-tangential coupling (Dundurs beta = {beta:.4}; exact for beta = 0); geometry.kind = \"surface\" solves it coupled")
+                        });
+                    }
+                }
+                if surface && l.sliding && !c.identical {
+                    let beta = dundurs_beta(&c.bodies[0], &c.bodies[1]);
+                    if beta != 0.0 {
+                        notes.push(format!("sliding q = f p on the surface's uncoupled pressure: the normal displacement of the shear (Dundurs beta = {beta:.4}) is neglected"));
+                    }
+                }
+                if let Some(beta) = c.coupling {
+                    reason.push_str(&format!("; coupled with the normal contact through Dundurs beta = {beta:.4} (dissimilar bodies): alternating normal and tangential solves until both fields settle"));
+                }
+            }
+            effects.push(on(E::Friction, reason, t));
+        }
+        _ if f > 0.0 => effects.push(off(
+            E::Friction,
+            format!("f = {f} but no tangential load, sliding, moment or rolling: nothing for friction to carry"),
+        )),
+        _ => effects.push(off(E::Friction, "friction coefficient is 0".to_string())),
+    }
+
+    match graded_k(scene) {
+        Some(k) if k > 0.0 => effects.push(on(
+            E::Grading,
+            format!("graded substrate with k = {k}"),
+            Technique::GradedKernels,
+        )),
+        Some(_) => effects.push(off(
+            E::Grading,
+            "graded substrate with k = 0 is homogeneous: solved as a homogeneous half-plane"
+                .to_string(),
+        )),
+        None => effects.push(off(E::Grading, "substrate is not graded".to_string())),
+    }
+
+    match (visco(scene), scene.substrate) {
+        (Some(true), Substrate::Viscoelastic { alpha, beta, .. }) => effects.push(on(
+            E::Viscoelasticity,
+            format!("standard solid with alpha = {alpha} s > beta = {beta} s"),
+            Technique::Goryacheva,
+        )),
+        (Some(false), _) => effects.push(off(
+            E::Viscoelasticity,
+            "alpha = beta: the standard solid is elastic; solved as elastic (Carter)".to_string(),
+        )),
+        _ => effects.push(off(E::Viscoelasticity, "no viscoelastic material".to_string())),
+    }
+
+    match (recipe, scene.motion) {
+        (Recipe::Rolling(r), Motion::Rolling { speed, creep }) => effects.push(on(
+            E::Rolling,
+            format!("rolling at w = {speed} m/s, creep {creep}"),
+            r.model.technique(),
+        )),
+        (
+            Recipe::Contact(ContactRecipe { tangential: Some(t @ Tangential::Rolling(r)), .. }),
+            Motion::RollingCreepage { speed, longitudinal, lateral, spin },
+        ) => {
+            let why = match (scene.solver.method, r.method) {
+                (Method::Auto, RollingMethod::Exact) => format!("the exact theory: solver.tolerance = {:e} is below FASTSIM's force error (0.1 fN)", scene.solver.tolerance),
+                (Method::Auto, RollingMethod::Fastsim) => format!("FASTSIM: solver.tolerance = {} admits its force error (up to 0.1 fN)", scene.solver.tolerance),
+                (Method::Auto, _) => format!("Polach's law: solver.tolerance = {} admits its force error (up to 0.15 fN) and there is no spin", scene.solver.tolerance),
+                _ => format!("solver.method = {:?}", r.method),
+            };
+            effects.push(on(
+                E::Rolling,
+                format!("3D steady rolling at V = {speed} m/s, creepages xi = {longitudinal}, eta = {lateral}, spin = {spin} 1/m; {why}"),
+                t.technique(),
+            ));
+            if !identical_materials(scene) {
+                notes.push("3D rolling treats the bodies as quasi-identical: the normal-tangential coupling (Dundurs beta) is neglected".to_string());
+            }
+        }
+        _ => effects.push(off(E::Rolling, "motion is static".to_string())),
+    }
+
+    match (recipe, l.moment != 0.0) {
+        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true) => {
+            effects.push(on(E::Twist, format!("moment M = {} N m", l.moment), t.technique()))
+        }
+        _ => effects.push(off(E::Twist, "no twisting moment".to_string())),
+    }
+
+    match scene.outputs.cycle {
+        Some(c) => effects.push(on(
+            E::Hysteresis,
+            format!("outputs.cycle with T*/(fP) = {}", c.amplitude),
+            Technique::Deresiewicz,
+        )),
+        None => effects.push(off(E::Hysteresis, "no outputs.cycle".to_string())),
+    }
+
+    match recipe {
+        Recipe::Contact(ContactRecipe { field: Some(field), .. }) => effects.push(on(
+            E::SubsurfaceField,
+            format!(
+                "outputs.field with {} x {} x {} points",
+                field.grid.x.2,
+                field.grid.y.2,
+                field.grid.z.map_or(1, |z| z.2)
+            ),
+            match field.method {
+                ContactFieldMethod::HertzSphere => Technique::HertzSphereField,
+                ContactFieldMethod::HertzSliding { .. } => Technique::HamiltonSlidingField,
+                ContactFieldMethod::HertzEllipse => Technique::HertzEllipseField,
+                ContactFieldMethod::Lattice => Technique::LatticeField,
+            },
+        )),
+        Recipe::Line(LineRecipe { field: Some(field), .. }) => effects.push(on(
+            E::SubsurfaceField,
+            format!("outputs.field with {} x {} points", field.grid.x.2, field.grid.y.2),
+            match field.method {
+                LineFieldMethod::McEwen => Technique::McEwen,
+                LineFieldMethod::Quadrature { .. } => Technique::StressQuadrature,
+            },
+        )),
+        _ => effects.push(off(E::SubsurfaceField, "no outputs.field".to_string())),
+    }
+    effects
+}

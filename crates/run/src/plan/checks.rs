@@ -1,0 +1,579 @@
+//! Refusals before anything is computed: the combinations no solver handles
+//! ([`refuse`]), the tolerance each solver supports ([`tolerance_for`]) and the capacity
+//! checks that need the contact size ([`capacity`]).
+
+use stickslip_graded::GradedMaterial;
+use stickslip_halfspace::hertz::{HertzLine, HertzSphere};
+use stickslip_halfspace::material::composite_modulus;
+use stickslip_traction::closed::Lubkin;
+
+use super::build::{along_axis, identical_materials, indenter_material, substrate_material};
+use super::recipe::ContactNormal;
+use super::Issue;
+use stickslip_scene::{ErrorKind, FieldGrid, FieldScale};
+use stickslip_scene::{
+    Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate, SurfaceBoundary,
+};
+
+pub(crate) fn issue(
+    kind: ErrorKind,
+    key: &'static str,
+    message: impl Into<String>,
+    hint: impl Into<String>,
+) -> Issue {
+    Issue::new(kind, key, message).hint(hint)
+}
+
+pub(crate) fn unsupported(
+    key: &'static str,
+    message: impl Into<String>,
+    hint: impl Into<String>,
+) -> Issue {
+    issue(ErrorKind::Unsupported, key, message, hint)
+}
+
+/// A physics constructor refused a value that passed the scene's range checks.
+pub(crate) fn invalid(key: &'static str, e: impl std::fmt::Display) -> Issue {
+    issue(ErrorKind::OutOfRange, key, e.to_string(), "see the allowed range in the message")
+}
+
+/// `solver.tolerance` if `what` supports it, else a refusal naming the supported range
+/// (tolerances are never clamped).
+pub(crate) fn tolerance_for(scene: &Scene, what: &str, range: (f64, f64)) -> Result<f64, Issue> {
+    let t = scene.solver.tolerance;
+    if t >= range.0 && t <= range.1 {
+        Ok(t)
+    } else {
+        Err(issue(
+            ErrorKind::OutOfRange,
+            "solver.tolerance",
+            format!("tolerance {t:e} is outside what {what} supports"),
+            format!("use a tolerance in [{:e}, {:e}], e.g. 1e-10", range.0, range.1),
+        ))
+    }
+}
+
+/// The lattice of a patch scene must resolve every patch: each patch holds element
+/// centres, no element belongs to two patches, and the lattice's normal force (pressure
+/// times the cells whose centres lie in a patch) is within
+/// [`crate::patches::LATTICE_AREA_TOLERANCE`] of the patches' force. Otherwise the refusal
+/// names the smallest grid found that does.
+pub(crate) fn lattice(scene: &Scene) -> Result<(), Issue> {
+    use crate::patches::LATTICE_AREA_TOLERANCE as TOL;
+    let Geometry::Patches(ps) = &scene.geometry else { return Ok(()) };
+    let patches = crate::patches::grid_patches(ps);
+    let (lo, hi) = stickslip_scene::patch_bounds(ps);
+    let force: f64 = ps.iter().map(stickslip_scene::Patch::force).sum();
+    // Relative error of the lattice force at `n` elements across the largest extent, or
+    // None when the lattice cannot hold the patches (empty or overlapping cells).
+    let error = |n: usize| -> Option<f64> {
+        let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
+        let grid =
+            stickslip_lattice::ContactGrid::from_patches(h, h, (lo[0], lo[1]), &patches).ok()?;
+        Some((grid.total_normal_force() - force).abs() / force)
+    };
+    let n = scene.solver.grid;
+    let err = error(n);
+    if err.is_some_and(|e| e <= TOL) {
+        return Ok(());
+    }
+    // The error of a lattice falls roughly as 1/n: start from that estimate, then double.
+    let mut m = match err {
+        Some(e) => ((n as f64 * e / TOL).ceil() as usize).max(n + 1),
+        None => 2 * n,
+    };
+    let mut found = None;
+    while m <= 4096 {
+        if error(m).is_some_and(|e| e <= TOL) {
+            found = Some(m);
+            break;
+        }
+        m = m + m / 2 + 1;
+    }
+    let what = match err {
+        Some(e) => format!(
+            "grid = {n} covers the patches with a lattice whose normal force is {:.1} % off the patches' force (allowed {:.0} %)",
+            100.0 * e,
+            100.0 * TOL
+        ),
+        None => format!("grid = {n} is too coarse for the patches: a patch holds no element centre, or two patches share one"),
+    };
+    Err(issue(
+        ErrorKind::OutOfRange,
+        "solver.grid",
+        what,
+        match found {
+            Some(m) => format!("use solver.grid >= {m}"),
+            None => "the patches are too small for any lattice up to 4096 elements per side; enlarge them or split the scene".to_string(),
+        },
+    ))
+}
+
+/// A twisting moment on an ellipse or patches against the contact's full-slip moment about
+/// the centre of pressure on the lattice (`ContactGrid::spin_capacity`, an upper bound of
+/// the torsional capacity): above it the contact spins and no solver can carry the moment.
+pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
+    use stickslip_lattice::ContactGrid;
+    let l = &scene.load;
+    if l.moment == 0.0 || l.friction <= 0.0 {
+        return Ok(());
+    }
+    let n = scene.solver.grid;
+    let grid = match &scene.geometry {
+        Geometry::Ellipsoid(e) => {
+            let NormalLoad::Force(p) = l.normal else { return Ok(()) };
+            let (a, b) = match *e {
+                stickslip_scene::Ellipse::SemiAxes { a, b } => (a, b),
+                stickslip_scene::Ellipse::Radii { rx, ry } => {
+                    let sub = substrate_material(&scene.substrate)?;
+                    let ind = indenter_material(scene, &sub)?;
+                    let Ok(h) = stickslip_halfspace::hertz::HertzEllipse::new(
+                        rx,
+                        ry,
+                        p,
+                        composite_modulus(&sub, &ind),
+                    ) else {
+                        return Ok(());
+                    };
+                    (h.semi_axis_x(), h.semi_axis_y())
+                }
+            };
+            ContactGrid::hertz_ellipse(a, b, p, n, n)
+        }
+        Geometry::Sphere { radius } if l.tangential != 0.0 => {
+            let NormalLoad::Force(p) = l.normal else { return Ok(()) };
+            let sub = substrate_material(&scene.substrate)?;
+            let ind = indenter_material(scene, &sub)?;
+            let Ok(h) = HertzSphere::new(p, *radius, composite_modulus(&sub, &ind)) else {
+                return Ok(());
+            };
+            ContactGrid::hertz_circle(h.contact_radius(), p, n)
+        }
+        Geometry::Patches(ps) => {
+            let (lo, hi) = stickslip_scene::patch_bounds(ps);
+            let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
+            ContactGrid::from_patches(h, h, (lo[0], lo[1]), &crate::patches::grid_patches(ps))
+        }
+        _ => return Ok(()),
+    };
+    let Ok(grid) = grid else { return Ok(()) };
+    let cap = grid.spin_capacity(l.friction);
+    if l.moment.abs() > cap {
+        return Err(issue(
+            ErrorKind::Impossible,
+            "load.moment",
+            format!(
+                "|M| = {} exceeds the full-slip moment of the contact about its centre of pressure, {cap:.6e} N m: the contact spins",
+                l.moment.abs()
+            ),
+            format!("reduce the moment below {cap:.4e} N m (less when a tangential force acts too)"),
+        ));
+    }
+    if l.tangential != 0.0 && !l.sliding {
+        // Together a force and a moment are carried only inside the limit surface of the
+        // contact's friction; beyond it the solver would run out of stick mid-way.
+        let d = l.direction_deg.to_radians();
+        let t = (l.tangential * d.cos(), l.tangential * d.sin());
+        let lambda = grid.load_capacity_factor(l.friction, t, l.moment);
+        if lambda < 1.0 {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.moment",
+                format!(
+                    "the tangential force {:.6e} N and the moment {:.6e} N m together exceed what friction carries on this contact: at most {lambda:.4} times this combination can be carried before the contact slides (gross slip, found on the lattice of solver.grid = {n})",
+                    l.tangential, l.moment
+                ),
+                format!("scale load.tangential and load.moment by less than {lambda:.4}, or reduce one of them"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Normal load implied by a prescribed contact size, where the geometry fixes it.
+fn implied_load(scene: &Scene) -> Option<f64> {
+    let a = match scene.load.normal {
+        NormalLoad::HalfWidth(a) => a,
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) => return Some(p),
+        NormalLoad::Approach(_) => return None,
+    };
+    let sub = substrate_material(&scene.substrate).ok()?;
+    let ind = indenter_material(scene, &sub).ok()?;
+    match (&scene.geometry, scene.substrate) {
+        (Geometry::Cylinder { radius }, Substrate::Graded { e0, k, nu }) if k > 0.0 => {
+            let m = GradedMaterial::new(e0, k, nu).ok()?;
+            stickslip_graded::load_from_half_width(&m, *radius, a).ok()
+        }
+        (Geometry::Cylinder { radius }, _) => {
+            HertzLine::from_half_width(a, *radius, composite_modulus(&sub, &ind))
+                .ok()
+                .map(|h| h.load())
+        }
+        (Geometry::Sphere { radius }, _) => {
+            Some(HertzSphere::load_for_contact_radius(a, *radius, composite_modulus(&sub, &ind)))
+        }
+        _ => None,
+    }
+}
+
+/// Checks that need the contact solved in closed form: T > fP when the load is given as a
+/// half-width, Lubkin's gross-slip moment.
+pub(crate) fn capacity(scene: &Scene) -> Result<(), Issue> {
+    let l = &scene.load;
+    let Some(p) = implied_load(scene) else { return Ok(()) };
+    if let NormalLoad::HalfWidth(_) = l.normal {
+        if !l.sliding && l.tangential.abs() > l.friction * p {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.tangential",
+                format!(
+                    "|T| = {} exceeds f P = {} (P = {p} implied by the half-width): the contact slides, partial slip is impossible",
+                    l.tangential.abs(),
+                    l.friction * p
+                ),
+                "reduce T below f P, or set sliding = true",
+            ));
+        }
+    }
+    if let (Geometry::Sphere { radius }, true) = (&scene.geometry, l.moment != 0.0) {
+        let sub = substrate_material(&scene.substrate)?;
+        let ind = indenter_material(scene, &sub)?;
+        let Ok(h) = HertzSphere::new(p, *radius, composite_modulus(&sub, &ind)) else {
+            return Ok(());
+        };
+        let mmax = Lubkin::gross_slip_moment_of(h.contact_radius(), p, l.friction);
+        if l.moment.abs() > mmax {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.moment",
+                format!(
+                    "|M| = {} exceeds the gross-slip moment 3 pi f P a / 16 = {mmax}: the contact spins",
+                    l.moment.abs()
+                ),
+                "reduce the moment below 3 pi f P a / 16 (Lubkin)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The combinations no solver handles, refused with the key to change and a hint.
+#[allow(clippy::too_many_lines)]
+pub(crate) fn refuse(scene: &Scene) -> Result<(), Issue> {
+    let g = &scene.geometry;
+    let l = &scene.load;
+    let method = scene.solver.method;
+    let two_d = g.is_2d();
+    let rolling = matches!(scene.motion, Motion::Rolling { .. });
+    let graded_k = match scene.substrate {
+        Substrate::Graded { k, .. } => Some(k),
+        _ => None,
+    };
+    let grading = graded_k.is_some_and(|k| k > 0.0);
+    let visco = match scene.substrate {
+        Substrate::Viscoelastic { alpha, beta, .. } => Some(alpha != beta),
+        _ => None,
+    };
+
+    // ---- combinations no solver handles -------------------------------------------------
+    if method == Method::Fast && (two_d || rolling) {
+        return Err(unsupported(
+            "solver.method",
+            "the fast solver works on 3D contact grids (sphere, ellipsoid, patches); 2D and rolling contacts use closed forms or quadrature",
+            "use method = \"auto\", \"closed-form\" or \"quadrature\"",
+        ));
+    }
+    if visco == Some(true) && !rolling {
+        return Err(unsupported(
+            "substrate.model",
+            "a viscoelastic substrate is solved in steady rolling (Goryacheva 1973); static viscoelastic indentation is not",
+            "add [motion] kind = \"rolling\" with a speed, or use model = \"homogeneous\" with the relaxed modulus",
+        ));
+    }
+    if graded_k.is_some() && !matches!(g, Geometry::Cylinder { .. }) {
+        return Err(unsupported(
+            "geometry.kind",
+            "the graded substrate is solved for a rigid cylinder (seed 000, G&P 2000)",
+            "use geometry.kind = \"cylinder\", or a homogeneous substrate",
+        ));
+    }
+    if graded_k.is_some() && scene.indenter != Indenter::Rigid {
+        return Err(unsupported(
+            "indenter.model",
+            "the graded-substrate solution (FORMULAS.md A4) is for a rigid cylinder",
+            "use [indenter] model = \"rigid\"",
+        ));
+    }
+    if rolling {
+        if graded_k.is_some() {
+            return Err(unsupported(
+                "motion.kind",
+                "rolling is solved for homogeneous (Carter) and viscoelastic (Goryacheva) bodies, not graded ones",
+                "use motion.kind = \"static\", or a homogeneous / viscoelastic substrate",
+            ));
+        }
+        if !matches!(g, Geometry::Cylinder { .. }) {
+            return Err(unsupported(
+                "geometry.kind",
+                "rolling needs a cylinder",
+                "use geometry.kind = \"cylinder\"",
+            ));
+        }
+        if !identical_materials(scene) {
+            return Err(unsupported(
+                "indenter.model",
+                "Carter and Goryacheva solve a cylinder rolling on a base of the same material",
+                "use [indenter] model = \"same\"",
+            ));
+        }
+        if !matches!(l.normal, NormalLoad::Force(_)) {
+            return Err(unsupported(
+                "load.half_width",
+                "rolling takes the normal load; the contact length follows from it",
+                "give load.normal = P (N/m)",
+            ));
+        }
+        if l.tangential != 0.0 || l.sliding {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.tangential",
+                "in steady rolling the tangential force follows from the creep; it cannot also be prescribed",
+                "remove load.tangential / load.sliding and set motion.creep",
+            ));
+        }
+        if l.friction <= 0.0 {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.friction",
+                "rolling with stick and slip needs a friction coefficient",
+                "give load.friction > 0",
+            ));
+        }
+        if scene.outputs.field.is_some() {
+            return Err(unsupported(
+                "outputs.field",
+                "subsurface fields are not computed for rolling contacts in this version",
+                "remove outputs.field",
+            ));
+        }
+        if matches!(method, Method::Lp) {
+            return Err(unsupported(
+                "solver.method",
+                "the LP is a 3D grid solver; rolling uses Carter or Goryacheva",
+                "use method = \"auto\"",
+            ));
+        }
+        if method == Method::ClosedForm && visco == Some(true) {
+            return Err(unsupported(
+                "solver.method",
+                "viscoelastic rolling has no closed form (Goryacheva's eqs 19 and 24 are solved numerically)",
+                "use method = \"auto\" or \"quadrature\"",
+            ));
+        }
+    }
+    if scene.outputs.cycle.is_some() {
+        if !matches!(g, Geometry::Sphere { .. }) {
+            return Err(unsupported(
+                "outputs.cycle",
+                "the Mindlin-Deresiewicz cycle is solved for a sphere (Hertz circle)",
+                "use geometry.kind = \"sphere\", or remove outputs.cycle",
+            ));
+        }
+        if l.friction <= 0.0 {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.friction",
+                "a loading cycle needs friction",
+                "give load.friction > 0",
+            ));
+        }
+        if l.sliding {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.sliding",
+                "a loading cycle below gross slip cannot be combined with full sliding",
+                "set sliding = false",
+            ));
+        }
+    }
+    if two_d {
+        if matches!(method, Method::Lp) {
+            return Err(unsupported(
+                "solver.method",
+                "the LP is a 3D grid solver; 2D contacts use closed forms or quadrature",
+                "use method = \"auto\", \"closed-form\" or \"quadrature\"",
+            ));
+        }
+        if matches!(g, Geometry::Punch { .. }) && l.tangential != 0.0 {
+            return Err(unsupported(
+                "load.tangential",
+                "partial slip under a flat punch is not solved in this version",
+                "use sliding = true (q = f p), or a cylinder",
+            ));
+        }
+    } else {
+        if l.tangential != 0.0
+            && l.moment != 0.0
+            && matches!(method, Method::Lp | Method::ClosedForm)
+        {
+            return Err(unsupported(
+                "load.moment",
+                "a tangential force and a twisting moment together have no closed form, and the LP takes one load mode",
+                "use method = \"fast\" (or \"auto\"), or give either load.tangential or load.moment",
+            ));
+        }
+        if l.sliding && l.moment != 0.0 {
+            return Err(issue(ErrorKind::Impossible, "load.moment", "with sliding = true the traction is q = f p along the sliding direction; a moment cannot also be prescribed", "remove load.moment or sliding"));
+        }
+        if l.moment != 0.0 && l.friction <= 0.0 {
+            return Err(issue(
+                ErrorKind::Impossible,
+                "load.moment",
+                "a twisting moment on a frictionless contact cannot be carried",
+                "give load.friction > 0",
+            ));
+        }
+        if method == Method::Quadrature && (l.tangential != 0.0 || l.moment != 0.0) {
+            return Err(unsupported(
+                "solver.method",
+                "3D partial slip is solved by closed forms or grid solvers (LP, fast), not by quadrature",
+                "use method = \"auto\", \"closed-form\", \"lp\" or \"fast\"",
+            ));
+        }
+    }
+    if method == Method::ClosedForm {
+        if grading {
+            return Err(unsupported(
+                "solver.method",
+                "a graded substrate's displacements and stresses have no closed form; they are integrated numerically",
+                "use method = \"auto\" or \"quadrature\"",
+            ));
+        }
+        if matches!(g, Geometry::Patches(_)) && (l.tangential != 0.0 || l.moment != 0.0) {
+            return Err(unsupported(
+                "solver.method",
+                "patches under a tangential load have no closed form",
+                "use method = \"auto\", \"lp\" or \"fast\"",
+            ));
+        }
+        if matches!(g, Geometry::Ellipsoid(_)) && l.moment != 0.0 {
+            return Err(unsupported(
+                "solver.method",
+                "twisting an ellipse has no closed form",
+                "use method = \"auto\", \"lp\" or \"fast\"",
+            ));
+        }
+        if matches!(g, Geometry::Ellipsoid(_))
+            && l.tangential != 0.0
+            && !along_axis(l.direction_deg)
+        {
+            return Err(unsupported(
+                "solver.method",
+                "Cattaneo's closed form needs the load along an axis of the ellipse",
+                "use direction_deg = 0 or 90, or method = \"auto\"",
+            ));
+        }
+        if matches!(g, Geometry::Punch { .. }) && scene.outputs.field.is_some() {
+            return Err(unsupported(
+                "solver.method",
+                "the flat-punch field is integrated numerically here",
+                "use method = \"auto\"",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// What a periodic surface cannot carry: a tangential force goes through the fast solver's
+/// periodic operator; a moment (a rotation is not periodic), sliding, rolling and the modified
+/// LP (no periodic images) are refused.
+pub(crate) fn periodic_surface(scene: &Scene) -> Result<(), Issue> {
+    let periodic =
+        matches!(&scene.geometry, Geometry::Surface(s) if s.boundary == SurfaceBoundary::Periodic);
+    let l = &scene.load;
+    if periodic && l.friction > 0.0 {
+        if l.moment != 0.0 {
+            return Err(unsupported(
+                "load.moment",
+                "a twisting moment on a periodic surface has no meaning (a rigid rotation is not periodic)",
+                "use boundary = \"free\" for an isolated contact under a moment, or remove load.moment",
+            ));
+        }
+        if l.sliding
+            || matches!(scene.motion, Motion::RollingCreepage { .. } | Motion::Rolling { .. })
+        {
+            return Err(unsupported(
+                "geometry.boundary",
+                "sliding and rolling on a periodic surface are not solved in this version",
+                "use boundary = \"free\", or a tangential force below the friction limit",
+            ));
+        }
+        if l.tangential != 0.0 && scene.solver.method == Method::Lp {
+            return Err(unsupported(
+                "solver.method",
+                "the modified LP solves isolated contacts only (no periodic images)",
+                "use solver.method = \"fast\" or \"auto\" on a periodic surface",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// How far from the contact a field box may reach, in contact semi-axes.
+pub const MAX_FIELD_REACH: f64 = 10.0;
+
+/// A 3D field box must stay within [`MAX_FIELD_REACH`] contact semi-axes of the contact
+/// (in plane and in depth): beyond, the stresses are the far field of a point load and a
+/// lattice over the box would be mostly empty.
+pub(crate) fn field_box(
+    scene: &Scene,
+    normal: &ContactNormal,
+    grid: FieldGrid,
+) -> Result<(), Issue> {
+    let sub = substrate_material(&scene.substrate)?;
+    let ind = indenter_material(scene, &sub)?;
+    let e_star = composite_modulus(&sub, &ind);
+    let (ax, ay) = match normal {
+        ContactNormal::Sphere { radius, force, e_star } => {
+            let a = HertzSphere::new(*force, *radius, *e_star)
+                .map_err(|e| invalid("load.normal", e))?
+                .contact_radius();
+            (a, a)
+        }
+        ContactNormal::Ellipse { rx, ry, force, .. } => {
+            let h = stickslip_halfspace::hertz::HertzEllipse::new(*rx, *ry, *force, e_star)
+                .map_err(|e| invalid("load.normal", e))?;
+            (h.semi_axis_x(), h.semi_axis_y())
+        }
+        ContactNormal::EllipseGiven { a, b, .. } => (*a, *b),
+        ContactNormal::Patches(ps) => {
+            let (lo, hi) = stickslip_scene::patch_bounds(ps);
+            (0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1]))
+        }
+        ContactNormal::Surface { surface, .. } => (0.5 * surface.size[0], 0.5 * surface.size[1]),
+    };
+    let unit = match grid.scale {
+        FieldScale::HalfWidth => ax,
+        FieldScale::Metres => 1.0,
+    };
+    let reach = MAX_FIELD_REACH * ax.max(ay);
+    let far = |v: f64| (v * unit).abs() > reach;
+    let z = grid.z.unwrap_or((0.0, 0.0, 1));
+    for (key, (lo, hi, _)) in
+        [("outputs.field.x", grid.x), ("outputs.field.y", grid.y), ("outputs.field.z", z)]
+    {
+        if far(lo) || far(hi) {
+            return Err(issue(
+                ErrorKind::OutOfRange,
+                key,
+                format!(
+                    "the box reaches {:.3e} m from the contact centre; the contact's largest semi-axis is {:.3e} m",
+                    (lo * unit).abs().max((hi * unit).abs()),
+                    ax.max(ay)
+                ),
+                format!("keep the box within {MAX_FIELD_REACH} semi-axes of the contact (scale = \"a\" measures in the semi-axis a along x)"),
+            ));
+        }
+    }
+    Ok(())
+}
