@@ -58,19 +58,36 @@ pub(crate) struct Region {
 /// Search lines, vertical gap and the profiles' parameters there.
 pub(crate) fn search(rail: &PlacedRail<'_>, wheel: &PlacedWheel<'_>) -> Result<Search> {
     let rs = rail.samples();
-    // The wheel's contact locus: (t, x, y, z).
+    let (r_lo, r_hi) =
+        rs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, s| (a.0.min(s[1]), a.1.max(s[1])));
+    // The wheel's contact locus: (t, x, y, z), over the samples whose circles pass above the
+    // rail's lateral range (with 5 mm to spare for the yaw and roll).
     let (theta0, _) = wheel.lowest(0.0);
-    let mut theta = theta0;
+    let (mut prev, mut theta) = (theta0, theta0);
     let ws: Vec<[f64; 4]> = wheel
         .profile
         .samples()
         .iter()
+        .filter(|s| {
+            let y = wheel.point(s[0], theta0).w.y;
+            y > r_lo - 5e-3 && y < r_hi + 5e-3
+        })
         .map(|s| {
-            theta = locus_theta(wheel, s[0], theta).unwrap_or(theta0);
-            let w = wheel.point(s[0], theta).w;
+            // Start from the straight continuation of the last two.
+            let start = 2.0 * theta - prev;
+            let th = locus_theta(wheel, s[0], start).unwrap_or(theta0);
+            (prev, theta) = (theta, th);
+            let w = wheel.point(s[0], th).w;
             [s[0], w.x, w.y, w.z]
         })
         .collect();
+    if ws.len() < 2 {
+        return Err(Error::NoContact {
+            min_gap: f64::INFINITY,
+            y: 0.5 * (r_lo + r_hi),
+            overlap: false,
+        });
+    }
     let range = |ys: &mut dyn Iterator<Item = f64>| {
         ys.fold((f64::INFINITY, f64::NEG_INFINITY), |a, y| (a.0.min(y), a.1.max(y)))
     };

@@ -30,6 +30,9 @@
 #[derive(Debug, Clone, PartialEq)]
 pub struct ParametricSpline {
     t: Vec<f64>,
+    /// Interval of parameter `m * bucket` (a lookup table, so evaluation does not search).
+    buckets: Vec<u32>,
+    bucket: f64,
     /// Knot values of y and z.
     g: [Vec<f64>; 2],
     /// Second derivatives of y and z at the knots.
@@ -67,7 +70,17 @@ impl ParametricSpline {
         }
         let (gy, cy) = fit(&t, y, alpha);
         let (gz, cz) = fit(&t, z, alpha);
-        Self { t, g: [gy, gz], c2: [cy, cz] }
+        let bucket = t[n - 1] / (n - 1) as f64;
+        let mut buckets = Vec::with_capacity(n + 1);
+        let mut i = 0usize;
+        for m in 0..=n {
+            let u = m as f64 * bucket;
+            while i + 2 < n && t[i + 1] <= u {
+                i += 1;
+            }
+            buckets.push(i as u32);
+        }
+        Self { t, buckets, bucket, g: [gy, gz], c2: [cy, cz] }
     }
 
     /// Parameter range $[t_0, t_{n-1}]$ (chord length of the data, m).
@@ -92,11 +105,18 @@ impl ParametricSpline {
     #[must_use]
     pub fn interval(&self, u: f64) -> usize {
         let n = self.t.len();
-        match self.t.partition_point(|&k| k <= u) {
-            0 => 0,
-            i if i >= n => n - 2,
-            i => i - 1,
+        if u.is_nan() || u <= 0.0 {
+            return 0;
         }
+        let m = (u / self.bucket) as usize;
+        if m >= self.buckets.len() {
+            return n - 2;
+        }
+        let mut i = self.buckets[m] as usize;
+        while i + 2 < n && self.t[i + 1] <= u {
+            i += 1;
+        }
+        i
     }
 
     /// The curve and its derivatives at $u$; beyond the ends the curve continues as its

@@ -69,10 +69,8 @@ fn left_is_the_mirrored_right() {
 
 /// Yaw reversed: the lateral creepage changes sign (it comes from the yaw), the patch moves
 /// from x to -x; the normal contact, the longitudinal creepage and the spin are unchanged.
-/// Exact for the geometry; the lattices are laid out from the interpenetration's bounding
-/// box, which rounds differently on the two sides, so the discrete patches (and with them
-/// the reference points at their pressure centroids) agree to a small fraction of a cell:
-/// eta to 7e-6 relative (asserted 1e-4), x to a thousandth of a cell (asserted 5e-3).
+/// The lattices are laid out centred on the interpenetration's bounding box, so the
+/// discrete problems are mirror images too: to rounding (asserted 1e-9).
 #[test]
 fn reversing_the_yaw_reverses_the_lateral_creepage() {
     let c = Cone::new(0.3, 1.0 / 40.0);

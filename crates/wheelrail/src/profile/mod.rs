@@ -67,8 +67,11 @@ pub struct Profile {
     samples: Vec<[f64; 3]>,
 }
 
-/// Largest parameter step of [`Profile::samples`] (m).
-pub const SAMPLE_STEP: f64 = 2e-5;
+/// Largest parameter step of [`Profile::samples`] (m): the contact search's resolution along
+/// the profiles (between samples the curve is taken as straight: an error of
+/// $h^2/(8R)$, 0.03 µm for a flange radius of 10 mm, and the smallest gap is refined on the
+/// exact curves).
+pub const SAMPLE_STEP: f64 = 5e-5;
 
 impl Profile {
     /// Read a profile from `text` (the contents of the file called `name`, which error
