@@ -5,7 +5,16 @@
 //! results, wall times, and CONTACT's published output beside them.
 //!
 //! ```sh
-//! cargo run --release -p stickslip-wheelrail --example manchester [-- left|right] [--repeat N]
+//! cargo run --release -p stickslip-wheelrail --example manchester -- \
+//!     [left|right] [--exact|--fastsim] [--normal] [--repeat N] [--smoothing MM]
+//! ```
+//!
+//! `--normal` presses the wheel with the issue's load definition (the normal forces'
+//! vertical components carry it) instead of CONTACT's (the total vertical force);
+//! `--smoothing` sets the profiles' smoothing length in millimetres (default 0: the
+//! interpolating spline).
+//!
+//! ```text
 //! ```
 //!
 //! The profiles are the project's copy in `crates/wheelrail/data/` (see its README for the
@@ -68,8 +77,8 @@ fn contact_reference(side: &str) -> Vec<[f64; 8]> {
         .collect()
 }
 
-fn problem(side: Side) -> WheelRail {
-    let o = ProfileOptions::default();
+fn problem(side: Side, smoothing: f64) -> WheelRail {
+    let o = ProfileOptions { smoothing, ..ProfileOptions::default() };
     let read = |file: &str, role| {
         let text = std::fs::read_to_string(format!("{DATA}/{file}")).expect("profile");
         Profile::read(&text, file, Format::from_name(file), role, &o).expect("profile reads")
@@ -114,7 +123,15 @@ fn main() {
         .and_then(|i| args.get(i + 1))
         .and_then(|v| v.parse().ok())
         .unwrap_or(1);
-    let pb = problem(side);
+    // --smoothing L: the profiles' smoothing length in mm (0: the interpolating spline).
+    let smoothing: f64 = args
+        .iter()
+        .position(|a| a == "--smoothing")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|v| v.parse::<f64>().ok())
+        .unwrap_or(0.0)
+        * 1e-3;
+    let pb = problem(side, smoothing);
     let cases = cases(side_name);
     let reference = contact_reference(side_name);
     // CONTACT's force control counts the creep forces' vertical components; `--normal`
