@@ -85,7 +85,7 @@ fn kinds(k: &BTreeSet<Kind>) -> String {
 
 /// The physics crates: libraries that must not know about scenes, the CLI, the
 /// verification or the benches.
-const PHYSICS: [&str; 8] = [
+const PHYSICS: [&str; 9] = [
     "stickslip-special",
     "stickslip-quad",
     "stickslip-halfspace",
@@ -94,6 +94,7 @@ const PHYSICS: [&str; 8] = [
     "stickslip-traction",
     "stickslip-normal",
     "stickslip-rolling",
+    "stickslip-wheelrail",
 ];
 
 /// The layers above the physics crates.
