@@ -12,7 +12,7 @@ array, at the same tolerance (1e-8 unless --tol).
 
 Ours runs as the example (one process per solve; the time is the solver's own
 `solve_seconds` including its coarser levels, plus the operator set-up printed apart).
-ASPHER 0.1.3 (`../shared/PEERS.md` says how to install it) runs `solve_nested` with its
+ASPHER 0.1.3 (built from its PyPI source in a venv of your own: `pip install numpy rfgen scikit-build-core pybind11`, then `pip install --no-build-isolation --no-binary aspher aspher==0.1.3.post1`, about 4 min) runs `solve_nested` with its
 defaults (nested grids from 64, |q| preconditioner) on the `periodic` backend for the rough
 surface, and on the `fft` and the default `h2` backends for the free sphere; the time is
 the `solve_nested` call (operators, coarse levels, finest level). Printed per solver: time,
