@@ -35,7 +35,7 @@ pub mod operator;
 pub mod roughness;
 
 pub use error::{Error, Result};
-pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
+pub use grid::{ContactGrid, GridPatch, PatchPressure, Shape};
 pub use influence::{Compliance, InfluenceModel};
 pub use operator::{
     even_quadrant, fast_size, ConvScratch, CrossOperator, NormalOperator, NormalScratch,

@@ -59,6 +59,10 @@ pub enum Error {
     /// An error of the contact lattice (grid, influence operator), with its own message.
     #[error(transparent)]
     Lattice(#[from] stickslip_lattice::Error),
+    /// An error of the tangential solver of a transient rolling step (fast partial-slip
+    /// solver), with its own message.
+    #[error(transparent)]
+    Tangential(#[from] stickslip_traction::Error),
 }
 
 /// Shorthand for `Result<T, Error>`.

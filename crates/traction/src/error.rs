@@ -108,6 +108,27 @@ pub enum Error {
         /// The load kind given.
         load: crate::contract::LoadKind,
     },
+    /// A corner of a load path cannot be solved (checked before any step): its normal
+    /// load is not positive, or its tangential load exceeds what friction carries.
+    #[error("load path corner {corner} (0-based): {name} = {value:e}: allowed {allowed}")]
+    PathCorner {
+        /// The corner (0-based).
+        corner: usize,
+        /// What was checked.
+        name: &'static str,
+        /// The value found.
+        value: f64,
+        /// What is allowed.
+        allowed: &'static str,
+    },
+    /// A step of a load path failed; `source` says why.
+    #[error("load path step {step} (0-based): {source}")]
+    HistoryStep {
+        /// The step (0-based; step 0 is the first corner).
+        step: usize,
+        /// The step's error.
+        source: Box<Error>,
+    },
     /// A dense linear system (the full-stick twist preprocessor) was singular.
     #[error("the full-stick system is not positive definite (pivot {index})")]
     NotPositiveDefinite {

@@ -7,7 +7,9 @@
 //! * [`solve`]: tangential force in any direction, or a twisting moment, on a grid, by the
 //!   modified LP;
 //! * [`fast`]: the fast solver (both traction components free, FFT products, nested start);
-//! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]).
+//! * [`contract`]: the one grid-solver contract both implement ([`GridSolver`]);
+//! * [`history`]: load paths solved step by step from the previous state (fretting loops,
+//!   energy per cycle, locked-in traction), on the fast solver.
 //!
 //! The grids, influence coefficients and FFT operators they work on are those of
 //! `stickslip-lattice`; the contact a normal solve finds (`stickslip-normal`) feeds them.
@@ -30,6 +32,7 @@ pub mod closed;
 pub mod contract;
 pub mod error;
 pub mod fast;
+pub mod history;
 pub mod lp;
 pub mod solve;
 
@@ -38,6 +41,7 @@ pub use contract::{
 };
 pub use error::{Error, Result};
 pub use fast::{FastConfig, FastProblem, FastSolution, TractionDirections, WarmStart};
+pub use history::{HistoryProblem, LoadHistory, LoadPath, PathControl};
 pub use lp::{LpConfig, LpSolution};
 pub use solve::{
     DirectionAssumption, ElementState, PatchSummary, Regime, SolveInfo, TractionProblem,

@@ -16,6 +16,10 @@
 //!
 //! - [`SteadyRolling`]: the exact theory on a contact grid (Kalker's boundary-element
 //!   discretisation, solved with FFT products);
+//! - [`TransientRolling`]: the same contact rolled in steps of one element length from any
+//!   state (at rest, a Cattaneo shift) under a prescribed creep force, each step the fast
+//!   partial-slip solver of `stickslip-traction` with the displacement memory carried one
+//!   element along; it reaches the steady state of [`SteadyRolling`];
 //! - [`fastsim`]: Kalker's simplified theory (FASTSIM);
 //! - [`polach`]: Polach's closed creep-force law (no spin);
 //! - [`kalker`]: Kalker's creepage coefficients $C_{11}, C_{22}, C_{23}$.
@@ -25,8 +29,10 @@ pub mod fastsim;
 mod gmres;
 pub mod kalker;
 pub mod polach;
+mod transient;
 
 pub use exact::{SteadyRolling, TOLERANCE_RANGE};
+pub use transient::{TransientRolling, TransientStep};
 
 /// The largest force error of [`fastsim`] against the exact theory, relative to $fN$, over
 /// the sweep of `tests/rolling3d.rs` (a/b = 0.3, 1, 3; pure and combined longitudinal,
@@ -79,6 +85,9 @@ pub enum RollingMethod {
     Fastsim,
     /// Polach's closed creep-force law ([`polach`]): forces only.
     Polach,
+    /// One step of transient rolling ([`TransientRolling`]; the fast solver's Newton steps
+    /// and residual).
+    Transient,
 }
 
 /// How a rolling solve went.

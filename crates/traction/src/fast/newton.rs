@@ -6,7 +6,7 @@ use super::solver::{
     resultant_moment, FastInfo, FastProblem, FastSolution, TractionDirections, WarmStart,
     SOLVER_NAME,
 };
-use crate::contract::LoadKind;
+use crate::contract::{Load, LoadKind};
 use crate::error::{Error, Result};
 use crate::solve::{ElementState, Regime};
 use std::time::Instant;
@@ -82,7 +82,13 @@ impl<'p, 'a> Solver<'p, 'a> {
         let centre = p.load.centre().unwrap_or_else(|| g.force_centroid());
         let (tx, ty) = p.load.force_components();
         let tmag = tx.hypot(ty);
-        let that = if tmag > 0.0 { (tx / tmag, ty / tmag) } else { (1.0, 0.0) };
+        // A zero force keeps its direction (a load path passing through zero under fixed
+        // directions constrains the component along the path, not along +x).
+        let that = match p.load {
+            _ if tmag > 0.0 => (tx / tmag, ty / tmag),
+            Load::Force { angle, .. } => (angle.cos(), angle.sin()),
+            _ => (1.0, 0.0),
+        };
         let dirs = match &p.directions {
             TractionDirections::Free => None,
             TractionDirections::ParallelToForce => Some(vec![that; n]),

@@ -1,0 +1,318 @@
+//! Transient (instationary) rolling on a contact grid: the contact solved in steps of one
+//! element length of rolling, each from the state of the step before, so that a contact can
+//! start from any state (at rest, or after a Cattaneo shift) and roll into the steady state.
+//!
+//! # The step
+//!
+//! Conventions as in [`crate::steady3d`]: $x$ is the rolling direction, material enters at
+//! the leading edge (largest $x$), $\mathbf q$ is the traction on body 1 and
+//! $\mathbf u = K*\mathbf q$ the difference of the surface displacements. When the contact
+//! rolls on by $\Delta = h_x$ (one element length), the material now at element $I$ was at
+//! its leading-side neighbour $I^+$ one step earlier, so the slip of body 1 over body 2 at
+//! $I$ in the step is (Kalker 1990, ch. 2, the transient form of the steady discretisation
+//! of [`SteadyRolling`](super::SteadyRolling))
+//! $$\mathbf S_I = \Delta\,\mathbf w(x_I, y_I) + \mathbf u^n_I - \mathbf u^{n-1}_{I^+},\qquad
+//!   \mathbf w = (\xi - \phi y,\ \eta + \phi x),$$
+//! and Coulomb's law asks $\mathbf S_I = 0$, $|\mathbf q_I| \le fp_I$ (stick) or
+//! $\mathbf q_I = -fp_I\,\mathbf S_I/|\mathbf S_I|$ (slip). At rest ([`TransientRolling::shift`],
+//! a Cattaneo shift) the material does not move and $\mathbf S_I = \Delta\boldsymbol\delta +
+//! \mathbf u^n_I - \mathbf u^{n-1}_I$. In a steady state ($\mathbf q^n = \mathbf q^{n-1}$)
+//! $\mathbf S_I/\Delta$ is exactly the steady slip of [`SteadyRolling`](super::SteadyRolling).
+//!
+//! Each step is the partial-slip problem of the fast solver (`stickslip-traction`) for the
+//! traction $-\mathbf q$ under the prescribed creep force $-\mathbf F$, with the prescribed
+//! displacement $\mathbf u^0_I = \mathbf u^{n-1}_{I^+} - \Delta\,\phi\,(-y_I, x_I)$: its
+//! slip $\boldsymbol\delta_f - K(-\mathbf q^n) - \mathbf u^0$ is then $\mathbf S$ and points
+//! along its traction $-\mathbf q$, as Coulomb's law asks, and its rigid shift
+//! $\boldsymbol\delta_f$ is $\Delta\,(\xi, \eta)$: the creepages of the step follow from the
+//! force. The creep force is prescribed (and may change from step to step); the spin
+//! creepage is prescribed with it. The grid is the contact extended by each row's cell
+//! ahead of its leading element (displaced, never loaded), as in the steady theory.
+//!
+//! Sources: Kalker (1990), *Three-dimensional elastic bodies in rolling contact*, ch. 2
+//! (the transient and steady discretisations); FORMULAS.md R3 (conventions).
+
+use super::{RollingInfo, RollingMethod, RollingSolution, Rows};
+use crate::error::{Error, Result};
+use stickslip_halfspace::Material;
+use stickslip_lattice::influence::{Compliance, InfluenceModel};
+use stickslip_lattice::{ContactGrid, ConvScratch, TensorConvolution};
+use stickslip_traction::{ElementState, FastConfig, FastProblem, FastSolution, Load, WarmStart};
+
+/// One step of a transient rolling history.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TransientStep {
+    /// Distance rolled since the start, $n\,h_x$ (m).
+    pub distance: f64,
+    /// Creep force $(F_x, F_y)$ on body 1 (N), the resultant of the solved traction.
+    pub force: (f64, f64),
+    /// Creepages $(\xi, \eta)$ of a rolling step: the rigid slip per unit rolling distance
+    /// that carries the force (`None` for a step at rest).
+    pub creepage: Option<(f64, f64)>,
+    /// Rigid displacement of body 1 over body 2 in the step (m): $\Delta\,(\xi, \eta)$ when
+    /// rolling, the shift when at rest.
+    pub shift: (f64, f64),
+    /// Contact elements that do not slip in the step over those in contact.
+    pub stick_fraction: f64,
+    /// Newton steps of the fast solver.
+    pub newton_iterations: usize,
+    /// Operator products of the step (the solve's and one for $K\mathbf q$).
+    pub products: usize,
+    /// The fast solver's final relative residual (the larger of complementarity and load).
+    pub residual: f64,
+}
+
+/// A contact rolling in steps of one element length from a given state.
+#[derive(Debug)]
+pub struct TransientRolling {
+    /// The contact elements first, then the cells ahead of each row (zero pressure).
+    grid: ContactGrid,
+    n_contact: usize,
+    /// Extended element of each element's leading-side neighbour (the cells ahead: their own).
+    up: Vec<usize>,
+    bodies: [Material; 2],
+    friction: f64,
+    config: FastConfig,
+    op: TensorConvolution,
+    scratch: ConvScratch,
+    /// The fast solver's traction, $-\mathbf q$, per extended element.
+    traction: Vec<(f64, f64)>,
+    /// $K(-\mathbf q)$ per extended element.
+    kq: Vec<(f64, f64)>,
+    state: Vec<ElementState>,
+    /// Slip of the last step (fast solver's sign, $\mathbf S$) per extended element.
+    slip: Vec<(f64, f64)>,
+    /// Whether the last step rolled (its slip is per unit distance over $h_x$).
+    rolled: bool,
+    steps: usize,
+    rolled_steps: usize,
+    last_info: RollingInfo,
+}
+
+impl TransientRolling {
+    /// Plan the problem on `grid` (the contact elements with their pressure, on one lattice)
+    /// for bodies 1 and 2 (quasi-identical: the normal–tangential coupling is neglected) and
+    /// friction coefficient $f > 0$, at rest and free of traction. The fast solver's default
+    /// configuration (relative residual $10^{-10}$).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for a friction coefficient that is not finite and positive;
+    /// [`Error::EmptyGrid`]; the lattice's errors for a grid off its lattice.
+    pub fn new(grid: &ContactGrid, bodies: [Material; 2], friction: f64) -> Result<Self> {
+        if !(friction.is_finite() && friction > 0.0) {
+            return Err(Error::OutOfDomain {
+                name: "friction coefficient",
+                value: friction,
+                allowed: "finite and > 0",
+            });
+        }
+        if grid.is_empty() {
+            return Err(Error::EmptyGrid { reason: "no contact element to roll on" });
+        }
+        let n = grid.len();
+        let rows = Rows::of(grid)?;
+        let mut ext = grid.clone();
+        let mut up = Vec::with_capacity(n);
+        for k in 0..n {
+            up.push(match rows.up[k] {
+                Some(u) => u,
+                None => {
+                    ext.x.push(rows.x0 + (rows.cell[k].0 + 1) as f64 * grid.hx);
+                    ext.y.push(grid.y[k]);
+                    ext.pressure.push(0.0);
+                    ext.patch.push(0);
+                    ext.len() - 1
+                }
+            });
+        }
+        up.extend(n..ext.len());
+        let c = Compliance::pair(&bodies[0], &bodies[1]);
+        let op = TensorConvolution::new(&ext, &c, InfluenceModel::ExactRectangle)?;
+        let scratch = op.make_scratch();
+        let m = ext.len();
+        Ok(Self {
+            grid: ext,
+            n_contact: n,
+            up,
+            bodies,
+            friction,
+            config: FastConfig::default(),
+            op,
+            scratch,
+            traction: vec![(0.0, 0.0); m],
+            kq: vec![(0.0, 0.0); m],
+            state: vec![ElementState::Stick; m],
+            slip: vec![(0.0, 0.0); m],
+            rolled: false,
+            steps: 0,
+            rolled_steps: 0,
+            last_info: RollingInfo {
+                method: RollingMethod::Transient,
+                iterations: 0,
+                products: 0,
+                residual: 0.0,
+            },
+        })
+    }
+
+    /// The fast solver's configuration for every step (its tolerance is each step's).
+    #[must_use]
+    pub fn with_config(mut self, config: FastConfig) -> Self {
+        self.config = config;
+        self
+    }
+
+    /// A step at rest: the bodies shift by $\Delta\boldsymbol\delta$ under the creep force
+    /// $\mathbf F$ on body 1 (from the unloaded state: a Cattaneo shift), with
+    /// $\mathbf S_I = \Delta\boldsymbol\delta + \mathbf u^n_I - \mathbf u^{n-1}_I$ (module
+    /// docs).
+    ///
+    /// # Errors
+    /// As [`TransientRolling::roll`].
+    pub fn shift(&mut self, force: (f64, f64)) -> Result<TransientStep> {
+        self.step(force, None)
+    }
+
+    /// Roll one element length $h_x$ under the creep force $\mathbf F$ on body 1 and the spin
+    /// creepage $\phi$ (1/m), with
+    /// $\mathbf S_I = h_x\,\mathbf w(x_I, y_I) + \mathbf u^n_I - \mathbf u^{n-1}_{I^+}$ (module
+    /// docs); the creepages $(\xi, \eta)$ are found.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for a non-finite force or spin; the fast solver's errors
+    /// (carried in [`Error::Tangential`]): a force beyond $f\sum_kP_k$ has no partial-slip
+    /// state ([`stickslip_traction::Error::CapacityExceeded`]), non-convergence. After an
+    /// error the state is that of the last solved step.
+    pub fn roll(&mut self, force: (f64, f64), spin: f64) -> Result<TransientStep> {
+        if !spin.is_finite() {
+            return Err(Error::OutOfDomain {
+                name: "spin creepage",
+                value: spin,
+                allowed: "finite",
+            });
+        }
+        self.step(force, Some(spin))
+    }
+
+    fn step(&mut self, force: (f64, f64), spin: Option<f64>) -> Result<TransientStep> {
+        for (name, v) in [("creep force F_x", force.0), ("creep force F_y", force.1)] {
+            if !v.is_finite() {
+                return Err(Error::OutOfDomain { name, value: v, allowed: "finite" });
+            }
+        }
+        let m = self.grid.len();
+        let h = self.grid.hx;
+        // u0 = u^{n-1} at the element the material came from (the fast solver's K(-q) is
+        // -u), less the spin part of the rigid slip.
+        let u0: Vec<(f64, f64)> = (0..m)
+            .map(|k| {
+                let from = if spin.is_some() { self.up[k] } else { k };
+                let v = self.kq[from];
+                let phi = spin.unwrap_or(0.0);
+                (-v.0 + h * phi * self.grid.y[k], -v.1 - h * phi * self.grid.x[k])
+            })
+            .collect();
+        let load = Load::force(-force.0, -force.1).map_err(Error::Tangential)?;
+        let fp = FastProblem::new(&self.grid, self.bodies, self.friction, load)
+            .and_then(|p| p.with_prescribed_displacement(&u0))
+            .map_err(Error::Tangential)?
+            .with_config(self.config);
+        // The traction is nearly stationary in the contact frame (steady rolling: exactly),
+        // so the last step's traction and state start this one at the same elements.
+        let warm = WarmStart {
+            traction: self.traction.clone(),
+            shift: (0.0, 0.0),
+            rotation: 0.0,
+            state: if self.steps == 0 { Vec::new() } else { self.state.clone() },
+        };
+        let sol = match fp.solve_from(&self.op, &mut self.scratch, &warm) {
+            Ok(s) => s,
+            Err(
+                stickslip_traction::Error::NotConverged { .. }
+                | stickslip_traction::Error::NoStickLeft { .. }
+                | stickslip_traction::Error::NotPositiveDefinite { .. },
+            ) => fp.solve_with(&self.op, &mut self.scratch).map_err(Error::Tangential)?,
+            Err(e) => return Err(Error::Tangential(e)),
+        };
+        Ok(self.commit(&sol, spin.is_some(), h))
+    }
+
+    fn commit(&mut self, sol: &FastSolution, rolled: bool, h: f64) -> TransientStep {
+        let m = self.grid.len();
+        let (qx, qy): (Vec<f64>, Vec<f64>) = sol.traction.iter().copied().unzip();
+        let (mut ux, mut uy) = (vec![0.0; m], vec![0.0; m]);
+        self.op.apply(&qx, &qy, &mut ux, &mut uy, &mut self.scratch);
+        for k in 0..m {
+            self.kq[k] = (ux[k], uy[k]);
+        }
+        self.traction.clone_from(&sol.traction);
+        self.state.clone_from(&sol.state);
+        self.slip.clone_from(&sol.slip);
+        self.rolled = rolled;
+        self.steps += 1;
+        if rolled {
+            self.rolled_steps += 1;
+        }
+        let n = self.n_contact;
+        let (mut contact, mut stick) = (0usize, 0usize);
+        for k in 0..n {
+            if self.grid.pressure[k] > 0.0 {
+                contact += 1;
+                if sol.state[k] == ElementState::Stick {
+                    stick += 1;
+                }
+            }
+        }
+        self.last_info = RollingInfo {
+            method: RollingMethod::Transient,
+            iterations: sol.info.iterations,
+            products: sol.info.products + 1,
+            residual: sol.info.residual.max(sol.info.load_residual),
+        };
+        TransientStep {
+            distance: self.rolled_steps as f64 * h,
+            force: (-sol.resultant.0, -sol.resultant.1),
+            creepage: rolled.then(|| (sol.shift.0 / h, sol.shift.1 / h)),
+            shift: sol.shift,
+            stick_fraction: if contact > 0 { stick as f64 / contact as f64 } else { 0.0 },
+            newton_iterations: sol.info.iterations,
+            products: sol.info.products + 1,
+            residual: sol.info.residual.max(sol.info.load_residual),
+        }
+    }
+
+    /// Distance rolled so far (m).
+    #[must_use]
+    pub fn distance(&self) -> f64 {
+        self.rolled_steps as f64 * self.grid.hx
+    }
+
+    /// The current state on the contact elements as a [`RollingSolution`]: the traction on
+    /// body 1, the slip of the last step per unit rolling distance ($\mathbf S/h_x$ after a
+    /// rolling step; the slip itself, m, after a step at rest), stick flags, the resultants.
+    #[must_use]
+    pub fn solution(&self) -> RollingSolution {
+        let n = self.n_contact;
+        let contact = ContactGrid {
+            hx: self.grid.hx,
+            hy: self.grid.hy,
+            x: self.grid.x[..n].to_vec(),
+            y: self.grid.y[..n].to_vec(),
+            pressure: self.grid.pressure[..n].to_vec(),
+            patch: self.grid.patch[..n].to_vec(),
+        };
+        let scale = if self.rolled { 1.0 / self.grid.hx } else { 1.0 };
+        // Body 1's traction is minus the fast solver's; the slip S keeps its sign (it
+        // points along the fast solver's traction, against body 1's).
+        let q = [
+            self.traction[..n].iter().map(|v| -v.0).collect(),
+            self.traction[..n].iter().map(|v| -v.1).collect(),
+        ];
+        let s = [
+            self.slip[..n].iter().map(|v| v.0 * scale).collect(),
+            self.slip[..n].iter().map(|v| v.1 * scale).collect(),
+        ];
+        let stick = self.state[..n].iter().map(|s| *s == ElementState::Stick).collect();
+        RollingSolution::on_grid(&contact, q, s, stick, self.last_info)
+    }
+}
