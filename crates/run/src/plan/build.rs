@@ -16,9 +16,9 @@ use super::checks::{self, invalid, tolerance_for};
 use super::cost::{self, lattice_elements};
 use super::recipe::{
     ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, Creepage, CycleRecipe, Force,
-    GridMethod, GridStep, LineDisplacements, LineField, LineFieldMethod, LineFriction, LineLoad,
-    LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod, RollingModel, RollingRecipe,
-    RollingStep, SurfaceLoad, Tangential,
+    GridMethod, GridStep, HistoryRecipe, LineDisplacements, LineField, LineFieldMethod,
+    LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod,
+    RollingModel, RollingRecipe, RollingStep, SurfaceLoad, Tangential,
 };
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
 use stickslip_scene::ErrorKind;
@@ -80,6 +80,10 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     };
     let effects = effects(scene, &recipe, &mut notes);
     let grid_solver = match &recipe {
+        Recipe::Contact(ContactRecipe { history: Some(_), .. }) => Some(
+            "a load path: the fast solver, one warm solve per step from the step before"
+                .to_string(),
+        ),
         Recipe::Contact(ContactRecipe { tangential: Some(Tangential::Grid(_)), .. }) => grid_reason,
         _ => None,
     };
@@ -562,8 +566,13 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     } else {
         None
     };
+    let history = match &l.history {
+        Some(h) => Some(history_recipe(scene, h, &normal)?),
+        None => None,
+    };
     let lattice_output = scene.outputs.surface
         || matches!(tangential, Some(Tangential::Grid(_) | Tangential::Rolling(_)))
+        || history.is_some()
         || scene.outputs.field.is_some();
     let cycle =
         scene.outputs.cycle.map(|c| CycleRecipe { amplitude: c.amplitude, points: c.points });
@@ -575,7 +584,9 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
                 _ => None,
             };
             let method = match (&normal, frictionless, sliding) {
-                _ if scene.solver.method == Method::Fast => ContactFieldMethod::Lattice,
+                _ if scene.solver.method == Method::Fast || history.is_some() => {
+                    ContactFieldMethod::Lattice
+                }
                 (ContactNormal::Sphere { .. }, true, _) => ContactFieldMethod::HertzSphere,
                 (
                     ContactNormal::Sphere { .. }
@@ -603,6 +614,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
             friction: f,
             tangential,
             cycle,
+            history,
             lattice_output,
             field,
             coupling: (couple
@@ -614,6 +626,45 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
         },
         grid_reason,
     ))
+}
+
+/// The recipe of a load path: the fast solver (no other solver takes a path), a free
+/// boundary (the history has no periodic operator), the normal load per corner.
+fn history_recipe(
+    scene: &Scene,
+    h: &stickslip_scene::History,
+    normal: &ContactNormal,
+) -> Result<HistoryRecipe, Issue> {
+    if !matches!(scene.solver.method, Method::Auto | Method::Fast) {
+        return Err(checks::unsupported(
+            "solver.method",
+            "a load path is solved by the fast solver, step by step",
+            "use method = \"auto\" or \"fast\"",
+        ));
+    }
+    if let ContactNormal::Surface { surface, .. } = normal {
+        if surface.boundary == SurfaceBoundary::Periodic {
+            return Err(checks::unsupported(
+                "load.history",
+                "a load path on a periodic surface is not solved in this version",
+                "use geometry.boundary = \"free\"",
+            ));
+        }
+    }
+    let constant = match scene.load.normal {
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) => p,
+        // validation refuses a path under anything but a normal force
+        _ => return Err(half_width_refused()),
+    };
+    Ok(HistoryRecipe {
+        control: h.control,
+        direction: scene.load.direction_deg.to_radians(),
+        tangential: h.tangential.clone(),
+        normal: (0..h.tangential.len()).map(|i| h.normal_at(i, constant)).collect(),
+        moment: h.moment.clone(),
+        steps: h.steps,
+        tolerance: tolerance_for(scene, "the fast solver", FastConfig::TOLERANCE_RANGE)?,
+    })
 }
 
 // ---------------------------------------------------------------------------------------
@@ -648,7 +699,10 @@ impl Recipe {
                 LineFriction::GradedPartialSlip { .. } => Technique::GradedPartialSlip,
             }),
             Recipe::Rolling(r) => Some(r.model.technique()),
-            Recipe::Contact(r) => r.tangential.map(|t| t.technique()),
+            Recipe::Contact(r) => match (&r.history, r.tangential) {
+                (Some(_), _) => Some(Technique::LoadHistory),
+                (None, t) => t.map(|t| t.technique()),
+            },
         }
     }
 }
@@ -702,7 +756,9 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
 
     let rolling = matches!(scene.motion, Motion::Rolling { .. } | Motion::RollingCreepage { .. });
     let f = l.friction;
-    let friction_cause = if l.tangential != 0.0 {
+    let friction_cause = if l.history.is_some() {
+        Some("a load path ([load.history])")
+    } else if l.tangential != 0.0 {
         Some("a tangential load")
     } else if l.sliding {
         Some("sliding = true")
@@ -814,20 +870,51 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
         _ => effects.push(off(E::Rolling, "motion is static".to_string())),
     }
 
-    match (recipe, l.moment != 0.0) {
-        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true) => {
+    let path_moment = l.history.as_ref().and_then(|h| h.moment.as_ref());
+    match (recipe, l.moment != 0.0, path_moment) {
+        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true, _) => {
             effects.push(on(E::Twist, format!("moment M = {} N m", l.moment), t.technique()))
         }
+        (Recipe::Contact(_), _, Some(m)) => effects.push(on(
+            E::Twist,
+            format!("a moment along the load path ({} corner values)", m.len()),
+            Technique::LoadHistory,
+        )),
         _ => effects.push(off(E::Twist, "no twisting moment".to_string())),
     }
 
-    match scene.outputs.cycle {
-        Some(c) => effects.push(on(
+    match (&l.history, scene.outputs.cycle) {
+        (Some(h), cycle) => {
+            let what = match h.control {
+                stickslip_scene::HistoryControl::Force => "tangential force",
+                stickslip_scene::HistoryControl::Shift => "shift",
+            };
+            let mut reason = format!(
+                "[load.history]: {} corners of the {what}{}{}, {} steps between corners; each step solved from the one before",
+                h.tangential.len(),
+                if h.normal.is_some() { " and the normal load" } else { "" },
+                if h.moment.is_some() { " and the moment" } else { "" },
+                h.steps
+            );
+            if let Some(c) = cycle {
+                reason.push_str(&format!(
+                    "; outputs.cycle with T*/(fP) = {} beside it (Mindlin-Deresiewicz closed form)",
+                    c.amplitude
+                ));
+            }
+            if let Recipe::Contact(c) = recipe {
+                if !c.identical && dundurs_beta(&c.bodies[0], &c.bodies[1]) != 0.0 {
+                    notes.push(format!("the load path neglects the normal-tangential coupling (Dundurs beta = {:.4}; exact for beta = 0)", dundurs_beta(&c.bodies[0], &c.bodies[1])));
+                }
+            }
+            effects.push(on(E::Hysteresis, reason, Technique::LoadHistory));
+        }
+        (None, Some(c)) => effects.push(on(
             E::Hysteresis,
             format!("outputs.cycle with T*/(fP) = {}", c.amplitude),
             Technique::Deresiewicz,
         )),
-        None => effects.push(off(E::Hysteresis, "no outputs.cycle".to_string())),
+        (None, None) => effects.push(off(E::Hysteresis, "no outputs.cycle".to_string())),
     }
 
     match recipe {
