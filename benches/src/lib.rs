@@ -18,3 +18,4 @@ pub mod accuracy;
 pub mod data;
 pub mod fast_sweep;
 pub mod process;
+pub mod surfaces;

@@ -17,7 +17,7 @@ use std::f64::consts::PI;
 use stickslip_halfspace::hertz::HertzSphere;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
-use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
+use stickslip_lattice::{ContactGrid, GridPatch, InfluenceModel, PatchPressure, Shape};
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 use stickslip_traction::{closed::Cattaneo, closed::Deresiewicz, closed::Lubkin, closed::Mindlin};
 use stickslip_traction::{ElementState, Load, Regime, TractionProblem, TractionSolution};
@@ -617,7 +617,7 @@ fn two_squares(p1: f64, p2: f64) -> Result<ContactGrid, Error> {
     let side = pubv::EX5_SIDE.value;
     let half = 0.5 * pubv::EX5_DISTANCE.value;
     let h = side / 6.0;
-    let sq = |cx: f64, p: f64| Patch {
+    let sq = |cx: f64, p: f64| GridPatch {
         shape: Shape::Rectangle { cx, cy: 0.0, wx: side, wy: side },
         pressure: PatchPressure::Uniform(p),
     };

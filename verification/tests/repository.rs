@@ -85,7 +85,7 @@ fn kinds(k: &BTreeSet<Kind>) -> String {
 
 /// The physics crates: libraries that must not know about scenes, the CLI, the
 /// verification or the benches.
-const PHYSICS: [&str; 8] = [
+const PHYSICS: [&str; 9] = [
     "stickslip-special",
     "stickslip-quad",
     "stickslip-halfspace",
@@ -94,6 +94,7 @@ const PHYSICS: [&str; 8] = [
     "stickslip-traction",
     "stickslip-normal",
     "stickslip-rolling",
+    "stickslip-wheelrail",
 ];
 
 /// The layers above the physics crates.
@@ -414,4 +415,41 @@ fn nothing_links_outside_the_repository() {
     }
     assert!(wrong.is_empty(), "{} problem(s):\n  {}", wrong.len(), wrong.join("\n  "));
     println!("{} files, {links} links to files, all inside the repository", files.len());
+}
+
+/// Issue 28: the bodies of a scene are resolved once. Within the run crate only
+/// `plan/bodies.rs` derives the composite modulus, Dundurs' beta or a homogeneous material
+/// from the scene; every check, recipe and stage reads them from the recipe's `Bodies`.
+#[test]
+fn the_run_resolves_the_bodies_in_one_place() {
+    let root = workspace_root();
+    let home = Path::new("crates/run/src/plan/bodies.rs");
+    let derivations =
+        ["composite_modulus(", "dundurs_beta(", "Material::new(", "GradedMaterial::new("];
+    let mut found = Vec::new();
+    for f in repository_files(&root) {
+        if !f.starts_with("crates/run/src") || f == home {
+            continue;
+        }
+        let text = std::fs::read_to_string(root.join(&f)).expect("a tracked file is readable");
+        for (n, line) in text.lines().enumerate() {
+            let code = line.split("//").next().unwrap_or("");
+            for d in derivations {
+                if code.contains(d) {
+                    found.push(format!("{}:{}: {}", f.display(), n + 1, line.trim()));
+                }
+            }
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "the bodies are resolved in {} only; read them from the recipe's `Bodies` instead of deriving them again:\n{}",
+        home.display(),
+        found.join("\n")
+    );
+    let text = std::fs::read_to_string(root.join(home)).expect("plan/bodies.rs exists");
+    assert!(
+        derivations[..2].iter().all(|d| text.contains(d)),
+        "plan/bodies.rs resolves E* and beta"
+    );
 }

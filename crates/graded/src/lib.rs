@@ -51,7 +51,7 @@ pub mod stress;
 pub use cylinder::{half_width_from_load, load_from_half_width, RigidCylinder};
 pub use displacement::{DisplacementParts, SurfaceDisplacement, SurfaceIntegrals};
 pub use error::Error;
-pub use load::{Patch, Profile, SurfaceLoad, TractionFn};
+pub use load::{LoadPatch, Profile, SurfaceLoad, TractionFn};
 pub use material::{beta, checked_beta, checked_i_k, checked_j_k, i_k, j_k, GradedMaterial};
 pub use stickslip_halfspace::{Displacement2, Stress2};
 pub use stickslip_quad::Tolerance;

@@ -7,7 +7,7 @@ use std::fmt;
 use std::sync::Arc;
 
 /// Signature of a user traction: `s -> (p_hat(s), q_hat(s))`, the smooth factors of a
-/// [`Patch`].
+/// [`LoadPatch`].
 pub type TractionFn = dyn Fn(f64) -> (f64, f64) + Send + Sync;
 
 /// The smooth factor $(\hat p(s), \hat q(s))$ of a patch.
@@ -52,14 +52,14 @@ impl Profile {
 /// zero outside. $\gamma = (1+k)/2$ is the rigid-cylinder pressure on the graded half-plane
 /// (FORMULAS.md A4), $\gamma = 1/2$ Hertz, $\gamma = 0$ a plain bounded traction.
 #[derive(Debug, Clone)]
-pub struct Patch {
+pub struct LoadPatch {
     pub(crate) centre: f64,
     pub(crate) half_width: f64,
     pub(crate) exponent: f64,
     pub(crate) profile: Profile,
 }
 
-impl Patch {
+impl LoadPatch {
     /// Validate and build a patch with centre `centre`, half-width `half_width > 0` and edge
     /// exponent `exponent` $> -1$ (integrable).
     ///
@@ -120,10 +120,10 @@ impl Patch {
     }
 }
 
-/// A surface load: the sum of its [`Patch`]es.
+/// A surface load: the sum of its [`LoadPatch`]es.
 #[derive(Debug, Clone, Default)]
 pub struct SurfaceLoad {
-    patches: Vec<Patch>,
+    patches: Vec<LoadPatch>,
 }
 
 impl SurfaceLoad {
@@ -135,14 +135,14 @@ impl SurfaceLoad {
 
     /// Add a patch (builder style).
     #[must_use]
-    pub fn with_patch(mut self, patch: Patch) -> Self {
+    pub fn with_patch(mut self, patch: LoadPatch) -> Self {
         self.patches.push(patch);
         self
     }
 
     /// The patches.
     #[must_use]
-    pub fn patches(&self) -> &[Patch] {
+    pub fn patches(&self) -> &[LoadPatch] {
         &self.patches
     }
 
@@ -157,7 +157,7 @@ impl SurfaceLoad {
         require(friction.is_finite(), "friction", friction, "finite")?;
         require(k.is_finite() && (0.0..1.0).contains(&k), "k", k, "0 <= k < 1")?;
         let patch =
-            Patch::new(0.0, a, 0.5 * (1.0 + k), Profile::Uniform { p: p0, q: friction * p0 })?;
+            LoadPatch::new(0.0, a, 0.5 * (1.0 + k), Profile::Uniform { p: p0, q: friction * p0 })?;
         Ok(Self::new().with_patch(patch))
     }
 
@@ -177,7 +177,7 @@ impl SurfaceLoad {
         let base = Self::cylinder(a, p0, k, friction)?;
         require(c > 0.0 && c <= a, "c", c, "0 < c <= a")?;
         let amp = -friction * p0 * (c / a).powf(1.0 + k);
-        let patch = Patch::new(0.0, c, 0.5 * (1.0 + k), Profile::Uniform { p: 0.0, q: amp })?;
+        let patch = LoadPatch::new(0.0, c, 0.5 * (1.0 + k), Profile::Uniform { p: 0.0, q: amp })?;
         Ok(base.with_patch(patch))
     }
 

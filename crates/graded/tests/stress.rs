@@ -6,7 +6,7 @@ use common::{read_table, rel, tol, ErrStats};
 use std::sync::Arc;
 use std::time::Instant;
 use stickslip_graded::{
-    Accuracy, Error, GradedMaterial, Patch, Profile, RigidCylinder, StressField, SurfaceLoad,
+    Accuracy, Error, GradedMaterial, LoadPatch, Profile, RigidCylinder, StressField, SurfaceLoad,
 };
 use stickslip_quad::{gauss_kronrod, AdaptiveConfig, Tolerance};
 
@@ -173,7 +173,7 @@ fn homogeneous_limit_vs_mcewen() {
     // is Flamant term by term (FORMULAS.md B); the spec's spot check:
     let m = GradedMaterial::new(1.0, 1e-6, 0.3).unwrap();
     let narrow = SurfaceLoad::new()
-        .with_patch(Patch::new(0.0, 1e-7, 0.0, Profile::Uniform { p: 0.5e7, q: 0.0 }).unwrap());
+        .with_patch(LoadPatch::new(0.0, 1e-7, 0.0, Profile::Uniform { p: 0.5e7, q: 0.0 }).unwrap());
     let s = StressField::new(&m, narrow, Accuracy::default()).unwrap().stress(0.3, 0.7).unwrap();
     let fl = stickslip_halfspace::flamant::line_load_stress(1.0, 0.0, 0.3, 0.7);
     println!("unit line load at (0.3, 0.7): graded k=1e-6 sxx = {:.9}, Flamant {:.9}", s.xx, fl.xx);
@@ -196,11 +196,17 @@ fn closures_and_partial_slip() {
     // closure is used on a patch that carries only the pressure, to exercise Custom profiles
     let custom = SurfaceLoad::new()
         .with_patch(
-            Patch::new(0.0, a, 0.5, Profile::Custom(Arc::new(move |_s| (p0, fr * p0)))).unwrap(),
+            LoadPatch::new(0.0, a, 0.5, Profile::Custom(Arc::new(move |_s| (p0, fr * p0))))
+                .unwrap(),
         )
         .with_patch(
-            Patch::new(0.0, c, 0.5, Profile::Custom(Arc::new(move |_s| (0.0, -fr * p0 * c / a))))
-                .unwrap(),
+            LoadPatch::new(
+                0.0,
+                c,
+                0.5,
+                Profile::Custom(Arc::new(move |_s| (0.0, -fr * p0 * c / a))),
+            )
+            .unwrap(),
         );
     let fc = StressField::new(&m0, custom, Accuracy::default()).unwrap();
     let mut st = ErrStats::default();
@@ -223,7 +229,7 @@ fn domain_errors() {
     assert!(matches!(f.stress(0.0, -1.0), Err(Error::OutOfDomain { name: "y", .. })));
     assert!(matches!(f.stress(f64::NAN, 1.0), Err(Error::OutOfDomain { name: "x", .. })));
     assert!(Accuracy::new(stickslip_graded::Tolerance::relative(0.5).unwrap()).is_err());
-    assert!(Patch::new(0.0, -1.0, 0.5, Profile::Uniform { p: 1.0, q: 0.0 }).is_err());
+    assert!(LoadPatch::new(0.0, -1.0, 0.5, Profile::Uniform { p: 1.0, q: 0.0 }).is_err());
     // far away and very deep points are finite and tiny
     let s = f.stress(1e8, 1e-3).unwrap();
     assert!(s.xx.is_finite() && s.yy.is_finite() && s.xy.is_finite());

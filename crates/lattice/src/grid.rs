@@ -117,7 +117,7 @@ pub enum PatchPressure {
 
 /// One contact patch: a shape and its pressure.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Patch {
+pub struct GridPatch {
     /// Which lattice elements belong to the patch.
     pub shape: Shape,
     /// Their pressure.
@@ -149,7 +149,12 @@ impl ContactGrid {
     /// [`Error::OutOfDomain`] for non-positive spacings or bad shapes/pressures,
     /// [`Error::OverlappingPatches`] if two patches select the same element,
     /// [`Error::EmptyGrid`] if no element is selected (or a patch selects none).
-    pub fn from_patches(hx: f64, hy: f64, origin: (f64, f64), patches: &[Patch]) -> Result<Self> {
+    pub fn from_patches(
+        hx: f64,
+        hy: f64,
+        origin: (f64, f64),
+        patches: &[GridPatch],
+    ) -> Result<Self> {
         positive("element side hx", hx)?;
         positive("element side hy", hy)?;
         for (name, v) in [("lattice origin x", origin.0), ("lattice origin y", origin.1)] {
@@ -286,7 +291,7 @@ impl ContactGrid {
             hx,
             hy,
             (-a, -b),
-            &[Patch { shape, pressure: PatchPressure::Hertz { load } }],
+            &[GridPatch { shape, pressure: PatchPressure::Hertz { load } }],
         )
     }
 
@@ -303,7 +308,7 @@ impl ContactGrid {
             h,
             h,
             (-0.5 * side, -0.5 * side),
-            &[Patch { shape, pressure: PatchPressure::Uniform(pressure) }],
+            &[GridPatch { shape, pressure: PatchPressure::Uniform(pressure) }],
         )
     }
 
@@ -632,7 +637,7 @@ mod tests {
 
     #[test]
     fn two_squares_and_overlap() {
-        let sq = |cx: f64, p: f64| Patch {
+        let sq = |cx: f64, p: f64| GridPatch {
             shape: Shape::Rectangle { cx, cy: 0.0, wx: 0.6, wy: 0.6 },
             pressure: PatchPressure::Uniform(p),
         };

@@ -35,11 +35,11 @@ pub mod operator;
 pub mod roughness;
 
 pub use error::{Error, Result};
-pub use grid::{ContactGrid, Patch, PatchPressure, Shape};
+pub use grid::{ContactGrid, GridPatch, PatchPressure, Shape};
 pub use influence::{Compliance, InfluenceModel};
 pub use operator::{
-    fast_size, ConvScratch, CrossOperator, NormalOperator, NormalScratch, PeriodicLattice,
-    TensorConvolution,
+    even_quadrant, fast_size, ConvScratch, CrossOperator, NormalOperator, NormalScratch,
+    PeriodicLattice, Precision, ScalarConvolution, ScalarScratch, TensorConvolution,
 };
 pub use stickslip_quad::Tolerance;
 

@@ -6,7 +6,7 @@ use fast_common::{steel, tol};
 use stickslip_halfspace::Material;
 use stickslip_lattice::TensorConvolution;
 use stickslip_lattice::{influence::tensor_matrix, influence::Compliance};
-use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
+use stickslip_lattice::{ContactGrid, GridPatch, InfluenceModel, PatchPressure, Shape};
 
 /// Deterministic pseudo-random numbers in [-1, 1) (64-bit LCG; no dependency).
 fn lcg(seed: &mut u64) -> f64 {
@@ -89,11 +89,11 @@ fn fft_product_matches_dense_matrix() {
                 0.01,
                 (-0.3, -0.1),
                 &[
-                    Patch {
+                    GridPatch {
                         shape: Shape::Circle { cx: -0.15, cy: 0.0, r: 0.08 },
                         pressure: PatchPressure::Hertz { load: 100.0 },
                     },
-                    Patch {
+                    GridPatch {
                         shape: Shape::Rectangle { cx: 0.12, cy: 0.03, wx: 0.1, wy: 0.06 },
                         pressure: PatchPressure::Uniform(1e4),
                     },

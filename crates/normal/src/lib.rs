@@ -36,6 +36,9 @@ pub mod solver;
 
 pub use coupled::{CoupledInfo, CoupledProblem, CoupledSolution};
 pub use error::{Error, Result};
-pub use solver::{NormalInfo, NormalLoad, NormalProblem, NormalSolution};
+pub use solver::{
+    LevelInfo, Nesting, NormalInfo, NormalLoad, NormalProblem, NormalSolution, Preconditioner,
+    NEST_MIN_CELLS,
+};
 pub use stickslip_lattice::{Boundary, CrossOperator, NormalOperator, NormalScratch};
 pub use stickslip_quad::Tolerance;

@@ -11,6 +11,9 @@ use stickslip_normal::{Boundary, Error, NormalLoad, NormalProblem, NormalSolutio
 use stickslip_traction::closed::Mindlin;
 use stickslip_traction::{ElementState, FastProblem, Load, Tolerance};
 
+mod common;
+use common::dense_active_set;
+
 /// Tolerances, each with its reason.
 mod tol {
     /// Issue 16: Hertz peak pressure within 1 % at 128 cells across (also asserted at 64;
@@ -298,79 +301,6 @@ fn westergaard_partial_contact() {
         assert!(ea.abs() <= tol::WESTERGAARD, "width {ea}");
         assert!(ep.abs() <= tol::WESTERGAARD, "peak {ep}");
     }
-}
-
-/// Dense LU with partial pivoting: solves a x = b in place (a row-major n x n).
-fn lu_solve(mut a: Vec<f64>, mut b: Vec<f64>) -> Vec<f64> {
-    let n = b.len();
-    for c in 0..n {
-        let piv =
-            (c..n).max_by(|&i, &j| a[i * n + c].abs().total_cmp(&a[j * n + c].abs())).unwrap();
-        if piv != c {
-            for k in 0..n {
-                a.swap(c * n + k, piv * n + k);
-            }
-            b.swap(c, piv);
-        }
-        for i in c + 1..n {
-            let f = a[i * n + c] / a[c * n + c];
-            if f != 0.0 {
-                for k in c..n {
-                    a[i * n + k] -= f * a[c * n + k];
-                }
-                b[i] -= f * b[c];
-            }
-        }
-    }
-    let mut x = vec![0.0; n];
-    for i in (0..n).rev() {
-        let s: f64 = (i + 1..n).map(|k| a[i * n + k] * x[k]).sum();
-        x[i] = (b[i] - s) / a[i * n + i];
-    }
-    x
-}
-
-/// Exact active-set solve of K p + g0 - delta >= 0, p >= 0, complementarity, with
-/// h^2 sum p = load: the bordered system on the active set, one cell in or out per step.
-fn dense_active_set(k: &[f64], g0: &[f64], area: f64, load: f64) -> (Vec<f64>, f64) {
-    let n = g0.len();
-    let first = (0..n).min_by(|&i, &j| g0[i].total_cmp(&g0[j])).unwrap();
-    let mut set = vec![first];
-    for _ in 0..10 * n {
-        let m = set.len();
-        let mut a = vec![0.0; (m + 1) * (m + 1)];
-        let mut b = vec![0.0; m + 1];
-        for (r, &i) in set.iter().enumerate() {
-            for (c, &j) in set.iter().enumerate() {
-                a[r * (m + 1) + c] = k[i * n + j];
-            }
-            a[r * (m + 1) + m] = -1.0;
-            a[m * (m + 1) + r] = area;
-            b[r] = -g0[i];
-        }
-        b[m] = load;
-        let x = lu_solve(a, b);
-        let delta = x[m];
-        if let Some((r, _)) =
-            x[..m].iter().enumerate().filter(|(_, v)| **v < 0.0).min_by(|a, b| a.1.total_cmp(b.1))
-        {
-            set.remove(r);
-            continue;
-        }
-        let mut p = vec![0.0; n];
-        for (r, &i) in set.iter().enumerate() {
-            p[i] = x[r];
-        }
-        let gap: Vec<f64> = (0..n)
-            .map(|i| (0..n).map(|j| k[i * n + j] * p[j]).sum::<f64>() + g0[i] - delta)
-            .collect();
-        let worst = (0..n).filter(|i| !set.contains(i)).min_by(|&i, &j| gap[i].total_cmp(&gap[j]));
-        match worst {
-            Some(i) if gap[i] < -1e-15 * delta.abs() => set.push(i),
-            _ => return (p, delta),
-        }
-    }
-    panic!("active set did not terminate");
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! and how closely a lattice must reproduce their force. The planner refuses a lattice that
 //! misses it (`plan/checks.rs`) before the audit would (`exec/audit.rs`).
 
-use stickslip_lattice::{Patch as GridPatch, PatchPressure, Shape};
+use stickslip_lattice::{GridPatch, PatchPressure, Shape};
 use stickslip_scene::{Patch, PatchShape};
 
 /// How far the lattice's total normal force may be from the applied one: a lattice of

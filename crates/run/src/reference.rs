@@ -14,7 +14,6 @@
 
 use stickslip_halfspace::cattaneo2d::Cattaneo2d;
 use stickslip_halfspace::hertz::{HertzEllipse, HertzLine, HertzSphere};
-use stickslip_halfspace::material::composite_modulus;
 use stickslip_traction::{closed::Cattaneo, closed::Deresiewicz, closed::Mindlin};
 
 use crate::exec::outcome::Outcome;
@@ -55,10 +54,10 @@ fn reference(label: &'static str, at: impl Fn(f64, f64) -> f64 + 'static) -> Opt
 pub fn of(plan: &Plan, out: &Outcome) -> References {
     match &plan.recipe {
         Recipe::Line(r) => {
-            let LineNormal::Hertz { radius, load, substrate, indenter } = r.normal else {
+            let LineNormal::Hertz { radius, load, bodies } = r.normal else {
                 return References::default();
             };
-            let es = composite_modulus(&substrate, &indenter);
+            let es = bodies.e_star;
             let h = match load {
                 crate::plan::recipe::LineLoad::HalfWidth(a) => {
                     HertzLine::from_half_width(a, radius, es)
@@ -124,7 +123,7 @@ fn contact(r: &ContactRecipe, out: &Outcome) -> References {
             if let (Some(_), Some(c)) = (r.cycle, &out.cycle) {
                 if let Ok(d) = Deresiewicz::new(a, force, r.friction, c.amplitude) {
                     let n = 200;
-                    let [sub, ind] = &r.bodies;
+                    let [sub, ind] = &r.bodies.pair();
                     if let (Ok(l1), Ok(l2)) = (d.hysteresis_loop(sub, n), d.hysteresis_loop(ind, n))
                     {
                         refs.cycle = Some((
@@ -196,7 +195,7 @@ fn history_loop(
         return None;
     }
     let d = Deresiewicz::new(a, force, r.friction, hi).ok()?;
-    let [sub, ind] = &r.bodies;
+    let [sub, ind] = &r.bodies.pair();
     let n = 200;
     let (l1, l2) = (d.hysteresis_loop(sub, n).ok()?, d.hysteresis_loop(ind, n).ok()?);
     let (mut x, mut y) = (Vec::new(), Vec::new());

@@ -8,7 +8,7 @@ mod fast_common;
 use fast_common::{steel, tol};
 use std::f64::consts::PI;
 use stickslip_lattice::TensorConvolution;
-use stickslip_lattice::{ContactGrid, Patch, PatchPressure, Shape};
+use stickslip_lattice::{ContactGrid, GridPatch, PatchPressure, Shape};
 use stickslip_traction::{closed::Lubkin, closed::Mindlin};
 use stickslip_traction::{
     ElementState, Error, FastProblem, FastSolution, Load, LoadKind, Regime, Tolerance,
@@ -181,7 +181,7 @@ fn ring_contact() {
 
 #[test]
 fn two_patches_ten_to_one() {
-    let sq = |cx: f64, p: f64| Patch {
+    let sq = |cx: f64, p: f64| GridPatch {
         shape: Shape::Rectangle { cx, cy: 0.0, wx: 0.06, wy: 0.06 },
         pressure: PatchPressure::Uniform(p),
     };

@@ -22,7 +22,7 @@ use std::f64::consts::FRAC_PI_4;
 use std::time::Instant;
 use stickslip_halfspace::rectangle::Compliance;
 use stickslip_lattice::influence::projected_matrix;
-use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
+use stickslip_lattice::{ContactGrid, GridPatch, InfluenceModel, PatchPressure, Shape};
 use stickslip_traction::{lp::modified_lp, lp::LpConfig};
 
 /// Solve the QP with clarabel on the scaled problem (forces by max capacity, influence by
@@ -78,7 +78,7 @@ fn clarabel_qp(a: &[f64], cap: &[f64], load: f64) -> (Vec<f64>, f64, SolverStatu
 }
 
 fn two_patches(h: f64) -> ContactGrid {
-    let sq = |cx: f64, p: f64| Patch {
+    let sq = |cx: f64, p: f64| GridPatch {
         shape: Shape::Rectangle { cx, cy: 0.0, wx: 0.6, wy: 0.6 },
         pressure: PatchPressure::Uniform(p),
     };

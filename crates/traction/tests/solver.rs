@@ -6,7 +6,7 @@ use common::{extended, hertz_radius, steel, tol};
 use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOutcome};
 use std::time::Instant;
 use stickslip_lattice::influence::projected_matrix;
-use stickslip_lattice::{ContactGrid, InfluenceModel, Patch, PatchPressure, Shape};
+use stickslip_lattice::{ContactGrid, GridPatch, InfluenceModel, PatchPressure, Shape};
 use stickslip_traction::closed::Lubkin;
 use stickslip_traction::{lp::modified_lp, lp::modified_lp_reference, lp::LpConfig};
 use stickslip_traction::{ElementState, Load, Regime, TractionProblem, TractionSolution};
@@ -153,7 +153,7 @@ fn optimality_conditions_and_regimes() {
 }
 
 fn example5(pressure1: f64, load: f64) -> (ContactGrid, TractionSolution) {
-    let sq = |cx: f64, p: f64| Patch {
+    let sq = |cx: f64, p: f64| GridPatch {
         shape: Shape::Rectangle { cx, cy: 0.0, wx: 0.6, wy: 0.6 },
         pressure: PatchPressure::Uniform(p),
     };

@@ -25,9 +25,11 @@ use std::sync::Arc;
 
 mod cross;
 mod normal;
+mod scalar;
 
 pub use cross::CrossOperator;
 pub use normal::{NormalOperator, NormalScratch};
+pub use scalar::{even_quadrant, Precision, ScalarConvolution, ScalarScratch};
 
 type C64 = Complex<f64>;
 
@@ -100,7 +102,6 @@ impl std::fmt::Debug for TensorConvolution {
 pub struct ConvScratch {
     lat: [Vec<f64>; 2],
     rowspec: [Vec<C64>; 2],
-    spec: [Vec<C64>; 2],
 }
 
 impl TensorConvolution {
@@ -249,7 +250,6 @@ impl TensorConvolution {
         ConvScratch {
             lat: [vec![0.0; self.nx * self.ny], vec![0.0; self.nx * self.ny]],
             rowspec: [vec![z; self.ny * self.mxh], vec![z; self.ny * self.mxh]],
-            spec: [vec![z; self.mxh * self.ny], vec![z; self.mxh * self.ny]],
         }
     }
 
@@ -296,28 +296,41 @@ impl TensorConvolution {
         );
     }
 
-    /// The fused column pass of a product: for each block of columns of the row spectra
-    /// `rows` (one per component, $n_y\times(M_x/2+1)$ row-major), the column FFTs of the
-    /// zero-padded columns, the kernel product ([`TensorConvolution::multiply`]) and the
-    /// inverse column FFTs, keeping the first $n_y$ entries of each column in `cols`
-    /// (column-major, `[i * ny + j]`). A block stays in cache from the forward to the
-    /// inverse transform, so the padded spectrum never goes to memory.
-    fn columns(&self, rows: &[&[C64]], cols: &mut [Vec<C64>]) {
+    /// The fused column pass of a product, in place: for each block of columns of the row
+    /// spectra `rows` (one per component, $n_y\times(M_x/2+1)$ row-major), the column FFTs of
+    /// the zero-padded columns, the kernel product ([`TensorConvolution::multiply`]) and the
+    /// inverse column FFTs, the first $n_y$ entries of each column written back where they
+    /// were read. A block stays in cache from the forward to the inverse transform, so the
+    /// padded spectrum never goes to memory, and the row spectra are the only work array.
+    fn columns(&self, rows: &mut [&mut [C64]]) {
         let (my, mxh, ny) = (self.my, self.mxh, self.ny);
         // Column stride in the block buffer: padded off a power of two so that the BLOCK
         // columns written row by row do not all map to the same cache sets.
         let ms = my + 8;
         let nc = rows.len();
         let z = C64::new(0.0, 0.0);
-        let mut outs: Vec<_> =
-            cols.iter_mut().map(|c| c[..mxh * ny].par_chunks_mut(BLOCK * ny)).collect();
-        let work = |(buf, scr): &mut (Vec<C64>, Vec<C64>), ib: usize, out: &mut [&mut [C64]]| {
+        // Each task owns one block of BLOCK columns: the row segments of that block, of every
+        // row and component (components one after the other), as disjoint slices.
+        let mut blocks: Vec<Vec<&mut [C64]>> =
+            (0..mxh.div_ceil(BLOCK)).map(|_| Vec::with_capacity(nc * ny)).collect();
+        for r in rows.iter_mut() {
+            for row in r[..ny * mxh].chunks_exact_mut(mxh) {
+                for (ib, seg) in row.chunks_mut(BLOCK).enumerate() {
+                    blocks[ib].push(seg);
+                }
+            }
+        }
+        let init = || {
+            let scr =
+                self.col_fwd.get_inplace_scratch_len().max(self.col_inv.get_inplace_scratch_len());
+            (vec![z; nc * BLOCK * ms], vec![z; scr])
+        };
+        blocks.into_par_iter().enumerate().for_each_init(init, |(buf, scr), (ib, mut segs)| {
             let i0 = ib * BLOCK;
-            let nb = out[0].len() / ny;
+            let nb = segs[0].len();
             for c in 0..nc {
                 let b0 = &mut buf[c * BLOCK * ms..(c + 1) * BLOCK * ms];
-                for j in 0..ny {
-                    let src = &rows[c][j * mxh + i0..j * mxh + i0 + nb];
+                for (j, src) in segs[c * ny..(c + 1) * ny].iter().enumerate() {
                     for (b, v) in src.iter().enumerate() {
                         b0[b * ms + j] = *v;
                     }
@@ -330,12 +343,7 @@ impl TensorConvolution {
             }
             for b in 0..nb {
                 let k0 = (i0 + b) * my;
-                if nc == 1 {
-                    let col = &mut buf[b * ms..b * ms + my];
-                    for (v, k) in col.iter_mut().zip(&self.kxx[k0..k0 + my]) {
-                        *v *= *k;
-                    }
-                } else {
+                {
                     let (bx, by) = buf.split_at_mut(BLOCK * ms);
                     let cx = &mut bx[b * ms..b * ms + my];
                     let cy = &mut by[b * ms..b * ms + my];
@@ -349,53 +357,32 @@ impl TensorConvolution {
                     }
                 }
             }
-            for (c, o) in out.iter_mut().enumerate() {
+            for c in 0..nc {
                 let b0 = &mut buf[c * BLOCK * ms..(c + 1) * BLOCK * ms];
                 for b in 0..nb {
-                    let col = &mut b0[b * ms..b * ms + my];
-                    self.col_inv.process_with_scratch(col, scr);
-                    o[b * ny..(b + 1) * ny].copy_from_slice(&col[..ny]);
+                    self.col_inv.process_with_scratch(&mut b0[b * ms..b * ms + my], scr);
+                }
+                for (j, dst) in segs[c * ny..(c + 1) * ny].iter_mut().enumerate() {
+                    for (b, v) in dst.iter_mut().enumerate() {
+                        *v = b0[b * ms + j];
+                    }
                 }
             }
-        };
-        let init = || {
-            let scr =
-                self.col_fwd.get_inplace_scratch_len().max(self.col_inv.get_inplace_scratch_len());
-            (vec![z; nc * BLOCK * ms], vec![z; scr])
-        };
-        if nc == 1 {
-            let o0 = outs.pop().expect("one component");
-            o0.enumerate().for_each_init(init, |st, (ib, a)| work(st, ib, &mut [a]));
-        } else {
-            let o1 = outs.pop().expect("two components");
-            let o0 = outs.pop().expect("two components");
-            o0.zip(o1)
-                .enumerate()
-                .for_each_init(init, |st, (ib, (a, b))| work(st, ib, &mut [a, b]));
-        }
+        });
     }
 
-    /// Inverse row FFTs of the kept column entries `cols` (`[i * ny + j]`) into `lat`
-    /// (row-major $n_y\times n_x$), scaled by $1/(M_xM_y)$.
-    fn rows_inverse(&self, cols: &[C64], rowbuf: &mut [C64], lat: &mut [f64]) {
+    /// Inverse row FFTs of the row spectra `rowspec` (row-major $n_y\times(M_x/2+1)$, as left
+    /// by [`TensorConvolution::columns`]; overwritten) into `lat` (row-major
+    /// $n_y\times n_x$), scaled by $1/(M_xM_y)$.
+    fn rows_inverse(&self, rowspec: &mut [C64], lat: &mut [f64]) {
         let (mx, my, mxh, nx, ny) = (self.mx, self.my, self.mxh, self.nx, self.ny);
         let scale = 1.0 / (mx as f64 * my as f64);
-        // Rows in blocks of BLOCK (the transpose reads BLOCK adjacent values per column).
-        rowbuf[..ny * mxh]
+        rowspec[..ny * mxh]
             .par_chunks_mut(BLOCK * mxh)
             .zip(lat.par_chunks_mut(BLOCK * nx))
-            .enumerate()
             .for_each_init(
                 || (vec![0.0; mx], self.c2r.make_scratch_vec()),
-                |(row, scr), (jb, (rsb, outb))| {
-                    let j0 = jb * BLOCK;
-                    let nb = rsb.len() / mxh;
-                    for i in 0..mxh {
-                        let src = &cols[i * ny + j0..i * ny + j0 + nb];
-                        for (b, v) in src.iter().enumerate() {
-                            rsb[b * mxh + i] = *v;
-                        }
-                    }
+                |(row, scr), (rsb, outb)| {
                     for (rs, out) in rsb.chunks_exact_mut(mxh).zip(outb.chunks_exact_mut(nx)) {
                         // The DC and (even sizes) Nyquist bins of a real signal are real;
                         // clear the rounding.
@@ -456,11 +443,11 @@ impl TensorConvolution {
             );
         }
         {
-            let [rx, ry] = &s.rowspec;
-            self.columns(&[rx, ry], &mut s.spec);
+            let [rx, ry] = &mut s.rowspec;
+            self.columns(&mut [&mut rx[..], &mut ry[..]]);
         }
         for (f, u) in [ux, uy].into_iter().enumerate() {
-            self.rows_inverse(&s.spec[f], &mut s.rowspec[f], &mut s.lat[f]);
+            self.rows_inverse(&mut s.rowspec[f], &mut s.lat[f]);
             let lat: &[f64] = &s.lat[f];
             u.par_iter_mut().zip(self.cell.par_iter()).for_each(|(o, &c)| *o = lat[c]);
         }
@@ -591,7 +578,7 @@ impl TensorConvolution {
     /// An operator of `mx` x `my` FFTs (no kernel yet) for the elements in the lattice cells
     /// `cell` of an `nx` x `ny` lattice.
     fn on_cells(nx: usize, ny: usize, mx: usize, my: usize, cell: Vec<usize>) -> Self {
-        let mut op = Self::scalar_plan(nx, ny, mx, my);
+        let mut op = Self::plan(nx, ny, mx, my);
         op.n = cell.len();
         let (row_items, row_ptr) = rows_of(&cell, nx, ny);
         op.cell = cell;
@@ -658,11 +645,9 @@ fn rows_of(cell: &[usize], nx: usize, ny: usize) -> (Vec<(usize, usize)>, Vec<us
     (items, ptr)
 }
 
-/// The scalar (normal) operator on a full $n_x\times n_y$ lattice, for [`NormalOperator`]:
-/// the same planned row/column FFTs as the tangential tensor, one real kernel spectrum
-/// (stored in `kxx`; `kxy`, `kyy` empty), arrays row-major `[j * nx + i]`.
 impl TensorConvolution {
-    fn scalar_plan(nx: usize, ny: usize, mx: usize, my: usize) -> Self {
+    /// FFT plans for an `nx` x `ny` lattice on an `mx` x `my` torus (no elements, no kernel).
+    fn plan(nx: usize, ny: usize, mx: usize, my: usize) -> Self {
         let mut rplan = RealFftPlanner::<f64>::new();
         let mut cplan = FftPlanner::<f64>::new();
         Self {
@@ -684,88 +669,6 @@ impl TensorConvolution {
             col_fwd: cplan.plan_fft_forward(my),
             col_inv: cplan.plan_fft_inverse(my),
         }
-    }
-
-    /// Aperiodic (zero-padded, $M \ge 2n-1$ per axis) scalar convolution with the even kernel
-    /// `kernel(di, dj)` $= K(|\Delta i|, |\Delta j|)$, evaluated for $0\le d_i<n_x$,
-    /// $0\le d_j<n_y$.
-    pub fn scalar_free(nx: usize, ny: usize, kernel: impl Fn(usize, usize) -> f64 + Sync) -> Self {
-        let mut op = Self::scalar_plan(nx, ny, fast_size(2 * nx - 1), fast_size(2 * ny - 1));
-        let (mx, my, mxh) = (op.mx, op.my, op.mxh);
-        let quad: Vec<f64> = (0..ny)
-            .into_par_iter()
-            .flat_map_iter(|dj| (0..nx).map(move |di| (di, dj)).collect::<Vec<_>>())
-            .map(|(di, dj)| kernel(di, dj))
-            .collect();
-        op.self_term = [quad[0], 0.0, quad[0]];
-        let mut lat = vec![0.0; mx * my];
-        for dj in 0..ny {
-            for di in 0..nx {
-                let v = quad[dj * nx + di];
-                for ej in [dj, (my - dj) % my] {
-                    for ei in [di, (mx - di) % mx] {
-                        lat[ej * mx + ei] = v;
-                    }
-                }
-            }
-        }
-        drop(quad);
-        let mut rowspec = vec![C64::new(0.0, 0.0); my * mxh];
-        let mut spec = vec![C64::new(0.0, 0.0); mxh * my];
-        op.forward(
-            my,
-            |j, row| row.copy_from_slice(&lat[j * mx..(j + 1) * mx]),
-            &mut rowspec,
-            &mut spec,
-        );
-        op.kxx = spec.iter().map(|z| z.re).collect();
-        op
-    }
-
-    /// Periodic scalar convolution on the $n_x\times n_y$ torus (no padding) with the transfer
-    /// function `transfer(kx, ky)` (displacement Fourier coefficient per pressure Fourier
-    /// coefficient at the wave vector $(k_x, k_y)$, rad/m); `(lx, ly)` the periods.
-    pub fn scalar_periodic(
-        nx: usize,
-        ny: usize,
-        (lx, ly): (f64, f64),
-        transfer: impl Fn(f64, f64) -> f64,
-    ) -> Self {
-        let mut op = Self::scalar_plan(nx, ny, nx, ny);
-        let (my, mxh) = (op.my, op.mxh);
-        let two_pi = 2.0 * std::f64::consts::PI;
-        let mut k = vec![0.0; mxh * my];
-        for i in 0..mxh {
-            for j in 0..my {
-                let jj = if 2 * j <= my { j as f64 } else { j as f64 - my as f64 };
-                k[i * my + j] = transfer(two_pi * i as f64 / lx, two_pi * jj / ly);
-            }
-        }
-        op.kxx = k;
-        op
-    }
-
-    /// Work space of [`TensorConvolution::apply_scalar`] (two complex arrays, about
-    /// $3M_xM_y/2$ complex numbers).
-    pub fn make_scalar_scratch(&self) -> ConvScratch {
-        let z = C64::new(0.0, 0.0);
-        ConvScratch {
-            lat: [Vec::new(), Vec::new()],
-            rowspec: [vec![z; self.ny * self.mxh], Vec::new()],
-            spec: [vec![z; self.mxh * self.ny], Vec::new()],
-        }
-    }
-
-    /// $u = K * q$ for the scalar kernel of [`TensorConvolution::scalar_free`] or
-    /// [`TensorConvolution::scalar_periodic`]; `q`, `u` row-major $n_x\times n_y$.
-    pub fn apply_scalar(&self, q: &[f64], u: &mut [f64], s: &mut ConvScratch) {
-        assert!(q.len() == self.n && u.len() == self.n, "lattice length");
-        let nx = self.nx;
-        let [rowspec, _] = &mut s.rowspec;
-        let [spec, _] = &mut s.spec;
-        self.rows_forward(|j, row| row[..nx].copy_from_slice(&q[j * nx..(j + 1) * nx]), rowspec);
-        self.columns(&[rowspec], std::slice::from_mut(spec));
-        self.rows_inverse(spec, rowspec, u);
     }
 }
 

@@ -47,7 +47,7 @@ pub(crate) fn solve(
         SurfaceLoad::Approach(d) => TNormalLoad::Approach(*d),
     };
     cx.progress("coupled normal-tangential solve", 0, 1);
-    let sol = CoupledProblem::new(nx, ny, (hx, hy), &gap, r.bodies, r.friction, tload)
+    let sol = CoupledProblem::new(nx, ny, (hx, hy), &gap, r.bodies.pair(), r.friction, tload)
         .map_err(surface_err)?
         .with_origin((-0.5 * s.size[0], -0.5 * s.size[1]))
         .with_tolerance(tol)

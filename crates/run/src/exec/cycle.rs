@@ -21,7 +21,7 @@ pub(crate) fn run(
     let d =
         Deresiewicz::new(n.ax, n.load, f, amp).map_err(|e| solver_err("Mindlin-Deresiewicz", e))?;
     let half = (c.points / 2).max(1);
-    let [sub, ind] = &r.bodies;
+    let [sub, ind] = &r.bodies.pair();
     let lsub = d.hysteresis_loop(sub, half).map_err(|e| solver_err("hysteresis loop", e))?;
     let lind = d.hysteresis_loop(ind, half).map_err(|e| solver_err("hysteresis loop", e))?;
     cx.ev.hysteresis += (lsub.len() + lind.len()) as u64;

@@ -2,7 +2,7 @@
 //! graded partial slip) and the closed forms of 3D contacts under a tangential force
 //! (sliding, Mindlin's circle, Cattaneo's ellipse).
 
-use stickslip_graded::{Patch as GradedPatch, Profile, SurfaceLoad};
+use stickslip_graded::{LoadPatch, Profile, SurfaceLoad};
 use stickslip_halfspace::cattaneo2d::Cattaneo2d;
 use stickslip_halfspace::hertz::strip::Strip;
 use stickslip_traction::{closed::Cattaneo, closed::Mindlin};
@@ -107,7 +107,7 @@ impl LineTraction {
     pub fn surface_load(&self, n: &LineContact) -> Result<SurfaceLoad, SceneError> {
         let (a, p0, k) = (n.a, n.p0, n.k);
         if n.punch {
-            let patch = GradedPatch::new(0.0, a, -0.5, Profile::Uniform { p: p0, q: self.mu * p0 })
+            let patch = LoadPatch::new(0.0, a, -0.5, Profile::Uniform { p: p0, q: self.mu * p0 })
                 .map_err(|e| solver_err("punch load", e))?;
             return Ok(SurfaceLoad::new().with_patch(patch));
         }
@@ -294,7 +294,7 @@ pub(crate) fn mindlin(
             }
         }
     }
-    let d = [m.compliance_per_body(&r.bodies[0]), m.compliance_per_body(&r.bodies[1])];
+    let d = [m.compliance_per_body(&r.bodies.substrate), m.compliance_per_body(&r.bodies.indenter)];
     Ok(TangentialOut {
         creep: None,
         zones: Zones {
@@ -341,7 +341,7 @@ pub(crate) fn cattaneo(
             }
         }
     }
-    let d = [m.compliance_per_body(&r.bodies[0]), m.compliance_per_body(&r.bodies[1])];
+    let d = [m.compliance_per_body(&r.bodies.substrate), m.compliance_per_body(&r.bodies.indenter)];
     Ok(TangentialOut {
         creep: None,
         zones: Zones {

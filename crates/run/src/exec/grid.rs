@@ -41,7 +41,7 @@ pub(crate) fn solve(
     }
     .map_err(|e| solver_err("grid solver load", e))?;
     let tolerance = Tolerance::relative(tolerance).map_err(|e| solver_err("tolerance", e))?;
-    let mut problem = GridProblem::new(grid, r.bodies, r.friction)
+    let mut problem = GridProblem::new(grid, r.bodies.pair(), r.friction)
         .map_err(|e| grid_err(method, e))?
         .with_tolerance(tolerance);
     // A periodic surface: the tangential operator has the same period as the normal one.
@@ -72,7 +72,7 @@ pub(crate) fn solve(
         Some(p) => p,
         None => {
             let share = sol
-                .substrate_share(grid, &r.bodies, r.identical, with_force)
+                .substrate_share(grid, &r.bodies.pair(), r.bodies.identical, with_force)
                 .map_err(|e| solver_err("substrate operator", e))?;
             [share * total, (1.0 - share) * total]
         }

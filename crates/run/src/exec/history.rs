@@ -157,7 +157,7 @@ fn setup<'a>(
                 ny,
                 (hx, hy),
                 gap,
-                r.bodies,
+                r.bodies.pair(),
                 stickslip_normal::Boundary::Free,
             )
             .map_err(surface_err)?
@@ -240,7 +240,7 @@ pub(crate) fn run(
         FastConfig::default().max_iterations(),
     )
     .map_err(|e| solver_err("fast solver configuration", e))?;
-    let problem = HistoryProblem::new(&st.grid, r.bodies, r.friction)
+    let problem = HistoryProblem::new(&st.grid, r.bodies.pair(), r.friction)
         .and_then(|p| p.with_angle(h.direction))
         .map_err(|e| history_err(h, e))?
         .with_config(config);

@@ -5,7 +5,6 @@ use std::f64::consts::PI;
 
 use stickslip_graded::{GradedMaterial, RigidCylinder};
 use stickslip_halfspace::hertz::{HertzEllipse, HertzLine, HertzSphere};
-use stickslip_halfspace::material::composite_modulus;
 use stickslip_lattice::ContactGrid;
 use stickslip_normal::{Boundary, NormalLoad as TNormalLoad, NormalProblem};
 use stickslip_traction::Tolerance;
@@ -77,8 +76,8 @@ pub(crate) fn line(
                 friction_possible,
             }
         }
-        LineNormal::Hertz { radius, load, substrate, indenter } => {
-            let es = composite_modulus(&substrate, &indenter);
+        LineNormal::Hertz { radius, load, bodies } => {
+            let es = bodies.e_star;
             let h = match load {
                 LineLoad::HalfWidth(a) => HertzLine::from_half_width(a, radius, es),
                 LineLoad::Force(p) => HertzLine::new(p, radius, es),
@@ -222,7 +221,7 @@ fn surface_contact(
         SurfaceBoundary::Periodic => Boundary::Periodic,
     };
     let tol = Tolerance::relative(tolerance).map_err(|e| solver_err("tolerance", e))?;
-    let problem = NormalProblem::new(nx, ny, (hx, hy), &gap, r.bodies, boundary)
+    let problem = NormalProblem::new(nx, ny, (hx, hy), &gap, r.bodies.pair(), boundary)
         .map_err(surface_err)?
         .with_tolerance(tol);
     let last = match load {

@@ -24,7 +24,7 @@ use stickslip_scene::{ErrorKind, SceneError};
 /// The combined shear modulus and Poisson ratio of Kalker's normalisation:
 /// $1/G = \tfrac12(1/G_1 + 1/G_2)$, $\nu/G = \tfrac12(\nu_1/G_1 + \nu_2/G_2)$.
 fn combined(r: &ContactRecipe) -> (f64, f64) {
-    let c = Compliance::pair(&r.bodies[0], &r.bodies[1]);
+    let c = Compliance::pair(&r.bodies.substrate, &r.bodies.indenter);
     let sum = c.one_minus_nu + c.nu;
     (2.0 / sum, c.nu / sum)
 }
@@ -48,7 +48,7 @@ pub(crate) fn solve(
             Some(fastsim::solve(grid, n.ax, n.ay, g, nu, r.friction, &creep).map_err(method_err)?)
         }
         _ => {
-            let p = SteadyRolling::new(grid, r.bodies, r.friction)
+            let p = SteadyRolling::new(grid, r.bodies.pair(), r.friction)
                 .and_then(|p| p.with_tolerance(step.tolerance))
                 .map_err(|e| solver_err("exact steady rolling", e))?;
             Some(p.solve(&creep).map_err(exact_err)?)
@@ -116,7 +116,7 @@ pub(crate) fn solve(
         stick,
         sol.stick.len() - stick,
         if stick == 0 { " (full slip: every element slides; the creepage is beyond saturation)" } else { "" },
-        if r.identical { "" } else { "; bodies treated as quasi-identical (normal-tangential coupling neglected)" },
+        if r.bodies.identical { "" } else { "; bodies treated as quasi-identical (normal-tangential coupling neglected)" },
     ));
     Ok(TangentialOut {
         creep: Some([sol.fx, sol.fy, sol.mz]),

@@ -66,7 +66,7 @@ pub(crate) fn lubkin(
             (at(x, y), rr, dir)
         },
     ));
-    let [sub, ind] = &r.bodies;
+    let [sub, ind] = &r.bodies.pair();
     let w = [m.rotation_per_body(sub), m.rotation_per_body(ind)];
     Ok(TangentialOut {
         creep: None,

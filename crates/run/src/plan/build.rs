@@ -4,33 +4,34 @@
 
 use std::f64::consts::PI;
 
-use stickslip_graded::{Accuracy, GradedMaterial};
+use stickslip_graded::Accuracy;
 use stickslip_halfspace::hertz::HertzSphere;
-use stickslip_halfspace::material::{composite_modulus, dundurs_beta};
-use stickslip_halfspace::Material;
 use stickslip_normal::NormalProblem;
 use stickslip_rolling::{CarterParams, GoryachevaParams, StressConfig};
 use stickslip_traction::{FastConfig, ModifiedLp};
 
-use super::checks::{self, invalid, tolerance_for};
+use super::bodies;
+use super::checks::{self, along_axis, tolerance_for};
 use super::cost::{self, lattice_elements};
 use super::recipe::{
-    ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, Creepage, CycleRecipe, Force,
-    GridMethod, GridStep, HistoryRecipe, LineDisplacements, LineField, LineFieldMethod,
+    Bodies, ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, Creepage, CycleRecipe,
+    Force, GridMethod, GridStep, HistoryRecipe, LineDisplacements, LineField, LineFieldMethod,
     LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod,
     RollingModel, RollingRecipe, RollingStep, SurfaceLoad, Tangential,
 };
+use super::refusal::{invalid, unsupported};
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
 use stickslip_scene::ErrorKind;
 use stickslip_scene::{
-    Elastic, Ellipse, Geometry, Indenter, Method, Motion, NormalLoad, Patch, Scene, Substrate,
-    Surface, SurfaceBoundary,
+    Ellipse, Geometry, Method, Motion, NormalLoad, Patch, Scene, Substrate, Surface,
+    SurfaceBoundary,
 };
 
 /// Plan `scene`: refuse what no solver handles, choose the method of every stage, explain
 /// each effect, estimate the cost.
 pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     checks::refuse(scene)?;
+    let bodies = bodies::resolve(scene)?;
     let mut notes = Vec::new();
     let visco = visco(scene);
     let rolling = matches!(scene.motion, Motion::Rolling { .. });
@@ -42,43 +43,43 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
             (Recipe::Rolling(rolling_recipe(scene, *radius, speed, creep)?), None)
         }
         (Geometry::Cylinder { radius }, Motion::Static) => {
-            (Recipe::Line(line_recipe(scene, LineBody::Cylinder(*radius))?), None)
+            (Recipe::Line(line_recipe(scene, &bodies, LineBody::Cylinder(*radius))?), None)
         }
         (Geometry::Punch { half_width }, Motion::Static) => {
-            (Recipe::Line(line_recipe(scene, LineBody::Punch(*half_width))?), None)
+            (Recipe::Line(line_recipe(scene, &bodies, LineBody::Punch(*half_width))?), None)
         }
         (_, Motion::Rolling { .. }) => {
-            return Err(checks::unsupported(
+            return Err(unsupported(
                 "geometry.kind",
                 "rolling needs a cylinder",
                 "use geometry.kind = \"cylinder\"",
             ))
         }
         (Geometry::Sphere { radius }, Motion::Static | Motion::RollingCreepage { .. }) => {
-            let (r, reason) = contact_recipe(scene, ContactBody::Sphere(*radius))?;
+            let (r, reason) = contact_recipe(scene, &bodies, ContactBody::Sphere(*radius))?;
             (Recipe::Contact(r), Some(reason))
         }
         (Geometry::Ellipsoid(e), Motion::Static | Motion::RollingCreepage { .. }) => {
-            let (r, reason) = contact_recipe(scene, ContactBody::Ellipsoid(*e))?;
+            let (r, reason) = contact_recipe(scene, &bodies, ContactBody::Ellipsoid(*e))?;
             (Recipe::Contact(r), Some(reason))
         }
         (Geometry::Patches(ps), Motion::Static) => {
-            let (r, reason) = contact_recipe(scene, ContactBody::Patches(ps))?;
+            let (r, reason) = contact_recipe(scene, &bodies, ContactBody::Patches(ps))?;
             (Recipe::Contact(r), Some(reason))
         }
         (Geometry::Surface(s), Motion::Static | Motion::RollingCreepage { .. }) => {
-            let (r, reason) = contact_recipe(scene, ContactBody::Surface(s))?;
+            let (r, reason) = contact_recipe(scene, &bodies, ContactBody::Surface(s))?;
             (Recipe::Contact(r), Some(reason))
         }
         (_, Motion::RollingCreepage { .. }) => {
-            return Err(checks::unsupported(
+            return Err(unsupported(
                 "geometry.kind",
                 "3D rolling with creepage needs a sphere, an ellipsoid or a surface (a cylinder rolls in 2D: use motion.creep)",
                 "use geometry.kind = \"ellipsoid\" (radii), \"sphere\" or \"surface\"",
             ))
         }
     };
-    let effects = effects(scene, &recipe, &mut notes);
+    let effects = effects(scene, &bodies, &recipe, &mut notes);
     let grid_solver = match &recipe {
         Recipe::Contact(ContactRecipe { history: Some(_), .. }) => Some(
             "a load path: the fast solver, one warm solve per step from the step before"
@@ -88,9 +89,9 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
         _ => None,
     };
     let (surface_points, grid_elements, cost) = cost::estimate(scene, &effects)?;
-    checks::capacity(scene)?;
+    checks::capacity(scene, &bodies)?;
     checks::lattice(scene)?;
-    checks::spin(scene)?;
+    checks::spin(scene, &bodies)?;
     Ok(Plan {
         title: scene.title.clone(),
         file: scene.file.clone(),
@@ -119,43 +120,6 @@ fn graded_k(scene: &Scene) -> Option<f64> {
         Substrate::Graded { k, .. } => Some(k),
         _ => None,
     }
-}
-
-fn elastic(e: Elastic, key: &'static str) -> Result<Material, Issue> {
-    Material::new(e.e, e.nu).map_err(|er| invalid(key, er))
-}
-
-/// The substrate as a homogeneous material (graded k = 0: E = e0; viscoelastic: the
-/// long-time E).
-pub(crate) fn substrate_material(s: &Substrate) -> Result<Material, Issue> {
-    match *s {
-        Substrate::Homogeneous(e) => elastic(e, "substrate.e"),
-        Substrate::Graded { e0, nu, .. } => elastic(Elastic { e: e0, nu }, "substrate.e0"),
-        Substrate::Viscoelastic { elastic: e, .. } => elastic(e, "substrate.e"),
-    }
-}
-
-pub(crate) fn indenter_material(scene: &Scene, sub: &Material) -> Result<Material, Issue> {
-    match scene.indenter {
-        Indenter::Rigid => Ok(Material::rigid()),
-        Indenter::Same => Ok(*sub),
-        Indenter::Homogeneous(e) => elastic(e, "indenter.e"),
-    }
-}
-
-pub(crate) fn identical_materials(scene: &Scene) -> bool {
-    match (scene.indenter, scene.substrate) {
-        (Indenter::Same, _) => true,
-        (Indenter::Homogeneous(i), Substrate::Homogeneous(s)) => i == s,
-        (Indenter::Homogeneous(i), Substrate::Viscoelastic { elastic, .. }) => i == elastic,
-        _ => false,
-    }
-}
-
-/// Whether an ellipse load direction lies along one of the axes (the Cattaneo closed form).
-pub(crate) fn along_axis(deg: f64) -> bool {
-    let r = deg.rem_euclid(90.0);
-    r.min(90.0 - r) < 1e-9
 }
 
 fn approach_refused() -> Issue {
@@ -188,22 +152,16 @@ enum LineBody {
     Punch(f64),
 }
 
-fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
+fn line_recipe(scene: &Scene, bodies: &Bodies, body: LineBody) -> Result<LineRecipe, Issue> {
     let l = &scene.load;
     let k = graded_k(scene);
     let grading = k.is_some_and(|k| k > 0.0);
-    let sub = substrate_material(&scene.substrate)?;
     let line_load = match l.normal {
         NormalLoad::HalfWidth(a) => LineLoad::HalfWidth(a),
         NormalLoad::Force(p) | NormalLoad::FromPatches(p) => LineLoad::Force(p),
         NormalLoad::Approach(_) => return Err(approach_refused()),
     };
-    let graded_material = match scene.substrate {
-        Substrate::Graded { e0, k, nu } if k > 0.0 => {
-            Some(GradedMaterial::new(e0, k, nu).map_err(|e| invalid("substrate.k", e))?)
-        }
-        _ => None,
-    };
+    let graded_material = bodies.graded;
     let normal = match (body, graded_material) {
         (LineBody::Punch(half_width), _) => match line_load {
             LineLoad::Force(force) => LineNormal::Punch { half_width, force },
@@ -212,12 +170,9 @@ fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
         (LineBody::Cylinder(radius), Some(material)) => {
             LineNormal::Graded { radius, load: line_load, material }
         }
-        (LineBody::Cylinder(radius), None) => LineNormal::Hertz {
-            radius,
-            load: line_load,
-            substrate: sub,
-            indenter: indenter_material(scene, &sub)?,
-        },
+        (LineBody::Cylinder(radius), None) => {
+            LineNormal::Hertz { radius, load: line_load, bodies: *bodies }
+        }
     };
     let f = l.friction;
     let friction = if f > 0.0 && (l.tangential != 0.0 || l.sliding) {
@@ -235,11 +190,7 @@ fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
         Some(grid) => {
             let punch = matches!(normal, LineNormal::Punch { .. });
             let method = if grading || punch || scene.solver.method == Method::Quadrature {
-                let material = match (normal, graded_material) {
-                    (_, Some(m)) => m,
-                    _ => GradedMaterial::new(sub.youngs_modulus(), 0.0, sub.poisson_ratio())
-                        .map_err(|e| invalid("substrate.e", e))?,
-                };
+                let material = bodies::half_plane(bodies)?;
                 LineFieldMethod::Quadrature { material, accuracy: graded_accuracy(scene)? }
             } else {
                 LineFieldMethod::McEwen
@@ -250,7 +201,9 @@ fn line_recipe(scene: &Scene, body: LineBody) -> Result<LineRecipe, Issue> {
     };
     let surface = if scene.outputs.surface {
         let displacements = match normal {
-            LineNormal::Hertz { substrate, .. } => LineDisplacements::Homogeneous { substrate },
+            LineNormal::Hertz { bodies, .. } => {
+                LineDisplacements::Homogeneous { substrate: bodies.substrate }
+            }
             LineNormal::Graded { material, .. } => {
                 LineDisplacements::Graded { material, accuracy: graded_accuracy(scene)? }
             }
@@ -279,7 +232,7 @@ fn rolling_recipe(
     creep: f64,
 ) -> Result<RollingRecipe, Issue> {
     let NormalLoad::Force(load) = scene.load.normal else {
-        return Err(checks::unsupported(
+        return Err(unsupported(
             "load.half_width",
             "rolling takes the normal load; the contact length follows from it",
             "give load.normal = P (N/m)",
@@ -312,7 +265,7 @@ fn rolling_recipe(
                 .map_err(|e| invalid("substrate", e))?,
         ),
         Substrate::Graded { .. } => {
-            return Err(checks::unsupported(
+            return Err(unsupported(
                 "motion.kind",
                 "rolling is solved for homogeneous (Carter) and viscoelastic (Goryacheva) bodies, not graded ones",
                 "use motion.kind = \"static\", or a homogeneous / viscoelastic substrate",
@@ -364,14 +317,14 @@ fn rolling_step(
     };
     let l = &scene.load;
     if l.friction <= 0.0 {
-        return Err(checks::unsupported(
+        return Err(unsupported(
             "load.friction",
             "rolling with creepage needs a friction coefficient: without friction no creep force arises",
             "give load.friction, e.g. friction = 0.3",
         ));
     }
     if l.tangential != 0.0 || l.moment != 0.0 || l.sliding {
-        return Err(checks::unsupported(
+        return Err(unsupported(
             "load.tangential",
             "in steady rolling the creep forces and spin moment follow from the creepages; a tangential load, a moment or sliding cannot also be prescribed",
             "remove load.tangential, load.moment and load.sliding; set motion.creepage instead",
@@ -379,7 +332,7 @@ fn rolling_step(
     }
     let ellipse = matches!(body, ContactBody::Sphere(_) | ContactBody::Ellipsoid(_));
     let needs_ellipse = |name: &str| {
-        checks::unsupported(
+        unsupported(
             "solver.method",
             format!("{name} needs a Hertz ellipse (its parameters come from Kalker's coefficients of an elliptical contact)"),
             "use method = \"auto\" or \"fast\" (the exact theory), which rolls any surface",
@@ -391,7 +344,7 @@ fn rolling_step(
         Method::Fastsim => RollingMethod::Fastsim,
         Method::Polach if !ellipse => return Err(needs_ellipse("Polach's law")),
         Method::Polach if creepage.spin != 0.0 => {
-            return Err(checks::unsupported(
+            return Err(unsupported(
                 "motion.creepage.spin",
                 "Polach's creep-force law has no spin",
                 "use method = \"fastsim\" or \"auto\", or remove the spin",
@@ -405,7 +358,7 @@ fn rolling_step(
         Method::Auto if ellipse && tol >= FASTSIM_FORCE_ERROR => RollingMethod::Fastsim,
         Method::Auto => RollingMethod::Exact,
         _ => {
-            return Err(checks::unsupported(
+            return Err(unsupported(
                 "solver.method",
                 "3D rolling is solved by the exact theory (\"fast\"), FASTSIM (\"fastsim\") or Polach's law (\"polach\")",
                 "use method = \"auto\"",
@@ -413,7 +366,7 @@ fn rolling_step(
         }
     };
     if method == RollingMethod::Polach && scene.outputs.field.is_some() {
-        return Err(checks::unsupported(
+        return Err(unsupported(
             "outputs.field",
             "Polach's law gives forces only, no traction distribution to compute stresses from",
             "use method = \"fastsim\" or \"fast\" for subsurface stresses under rolling",
@@ -436,11 +389,13 @@ enum ContactBody<'a> {
     Surface(&'a Surface),
 }
 
-fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe, String), Issue> {
+fn contact_recipe(
+    scene: &Scene,
+    bodies: &Bodies,
+    body: ContactBody<'_>,
+) -> Result<(ContactRecipe, String), Issue> {
     let l = &scene.load;
-    let sub = substrate_material(&scene.substrate)?;
-    let ind = indenter_material(scene, &sub)?;
-    let e_star = composite_modulus(&sub, &ind);
+    let (sub, e_star) = (bodies.substrate, bodies.e_star);
     let force_of = || match l.normal {
         NormalLoad::Force(p) | NormalLoad::FromPatches(p) => Ok(p),
         NormalLoad::HalfWidth(_) => Err(half_width_refused()),
@@ -484,7 +439,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     let elements = lattice_elements(scene);
     // Dissimilar bodies on a surface with friction carrying a force or moment: the normal
     // and tangential problems are solved together (Dundurs coupling), with the fast solver.
-    let beta = dundurs_beta(&sub, &ind);
+    let beta = bodies.beta;
     let periodic = matches!(&normal, ContactNormal::Surface { surface, .. } if surface.boundary == SurfaceBoundary::Periodic);
     let couple = matches!(normal, ContactNormal::Surface { .. })
         && beta != 0.0
@@ -494,7 +449,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
         && !matches!(scene.motion, Motion::RollingCreepage { .. } | Motion::Rolling { .. })
         && method != Method::Lp;
     if couple && l.normal_sweep.is_some() {
-        return Err(checks::unsupported(
+        return Err(unsupported(
             "load.normal",
             format!("a load sweep between dissimilar bodies (Dundurs beta = {beta:.4}) with a tangential load is not solved in this version (the coupled solve runs at one load)"),
             "give one normal load, or remove the tangential load for the sweep",
@@ -600,7 +555,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
                 }
                 _ => ContactFieldMethod::Lattice,
             };
-            checks::field_box(scene, &normal, grid)?;
+            checks::field_box(bodies, &normal, grid)?;
             Some(ContactField { grid, method, nu: sub.poisson_ratio() })
         }
         None => None,
@@ -608,8 +563,7 @@ fn contact_recipe(scene: &Scene, body: ContactBody<'_>) -> Result<(ContactRecipe
     Ok((
         ContactRecipe {
             normal,
-            bodies: [sub, ind],
-            identical: identical_materials(scene),
+            bodies: *bodies,
             grid: scene.solver.grid,
             friction: f,
             tangential,
@@ -636,7 +590,7 @@ fn history_recipe(
     normal: &ContactNormal,
 ) -> Result<HistoryRecipe, Issue> {
     if !matches!(scene.solver.method, Method::Auto | Method::Fast) {
-        return Err(checks::unsupported(
+        return Err(unsupported(
             "solver.method",
             "a load path is solved by the fast solver, step by step",
             "use method = \"auto\" or \"fast\"",
@@ -644,7 +598,7 @@ fn history_recipe(
     }
     if let ContactNormal::Surface { surface, .. } = normal {
         if surface.boundary == SurfaceBoundary::Periodic {
-            return Err(checks::unsupported(
+            return Err(unsupported(
                 "load.history",
                 "a load path on a periodic surface is not solved in this version",
                 "use geometry.boundary = \"free\"",
@@ -741,7 +695,12 @@ impl Tangential {
     }
 }
 
-fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<EffectPlan> {
+fn effects(
+    scene: &Scene,
+    bodies: &Bodies,
+    recipe: &Recipe,
+    notes: &mut Vec<String>,
+) -> Vec<EffectPlan> {
     use Effect as E;
     let l = &scene.load;
     let on = |effect, reason: String, t: Technique| EffectPlan {
@@ -771,14 +730,14 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
     };
     match (recipe.friction_technique(), friction_cause) {
         (Some(t), Some(cause)) => {
-            if t == Technique::Cattaneo2d && !identical_materials(scene) {
+            if t == Technique::Cattaneo2d && !bodies.identical {
                 notes.push("2D Cattaneo-Mindlin neglects the coupling of normal and tangential tractions; exact for identical materials only (Dundurs beta = 0)".to_string());
             }
             if t == Technique::GradedPartialSlip {
                 notes.push("graded partial slip: the stick zone is where the q-induced u_x is uniform; the pressure-induced odd part of u_x (FORMULAS.md A5) is neglected, as in Cattaneo-Mindlin".to_string());
             }
             if matches!(t, Technique::Mindlin | Technique::Cattaneo | Technique::Lubkin)
-                && !identical_materials(scene)
+                && !bodies.identical
             {
                 notes.push("Mindlin/Cattaneo/Lubkin neglect normal-tangential coupling (exact for identical materials)".to_string());
             }
@@ -786,8 +745,8 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
             if let Recipe::Contact(c) = recipe {
                 let surface = matches!(c.normal, ContactNormal::Surface { .. });
                 let grid = matches!(c.tangential, Some(Tangential::Grid(_)));
-                if grid && c.coupling.is_none() && !c.identical {
-                    let beta = dundurs_beta(&c.bodies[0], &c.bodies[1]);
+                if grid && c.coupling.is_none() && !c.bodies.identical {
+                    let beta = c.bodies.beta;
                     if beta != 0.0 {
                         notes.push(if surface {
                             format!("the modified LP neglects the normal-tangential coupling (Dundurs beta = {beta:.4}); solver.method = \"fast\" or \"auto\" solves it")
@@ -796,8 +755,8 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
                         });
                     }
                 }
-                if surface && l.sliding && !c.identical {
-                    let beta = dundurs_beta(&c.bodies[0], &c.bodies[1]);
+                if surface && l.sliding && !c.bodies.identical {
+                    let beta = c.bodies.beta;
                     if beta != 0.0 {
                         notes.push(format!("sliding q = f p on the surface's uncoupled pressure: the normal displacement of the shear (Dundurs beta = {beta:.4}) is neglected"));
                     }
@@ -863,7 +822,7 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
                 format!("3D steady rolling at V = {speed} m/s, creepages xi = {longitudinal}, eta = {lateral}, spin = {spin} 1/m; {why}"),
                 t.technique(),
             ));
-            if !identical_materials(scene) {
+            if !bodies.identical {
                 notes.push("3D rolling treats the bodies as quasi-identical: the normal-tangential coupling (Dundurs beta) is neglected".to_string());
             }
         }
@@ -903,8 +862,8 @@ fn effects(scene: &Scene, recipe: &Recipe, notes: &mut Vec<String>) -> Vec<Effec
                 ));
             }
             if let Recipe::Contact(c) = recipe {
-                if !c.identical && dundurs_beta(&c.bodies[0], &c.bodies[1]) != 0.0 {
-                    notes.push(format!("the load path neglects the normal-tangential coupling (Dundurs beta = {:.4}; exact for beta = 0)", dundurs_beta(&c.bodies[0], &c.bodies[1])));
+                if !c.bodies.identical && c.bodies.beta != 0.0 {
+                    notes.push(format!("the load path neglects the normal-tangential coupling (Dundurs beta = {:.4}; exact for beta = 0)", c.bodies.beta));
                 }
             }
             effects.push(on(E::Hysteresis, reason, Technique::LoadHistory));

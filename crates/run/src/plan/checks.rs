@@ -2,40 +2,17 @@
 //! ([`refuse`]), the tolerance each solver supports ([`tolerance_for`]) and the capacity
 //! checks that need the contact size ([`capacity`]).
 
-use stickslip_graded::GradedMaterial;
 use stickslip_halfspace::hertz::{HertzLine, HertzSphere};
-use stickslip_halfspace::material::composite_modulus;
 use stickslip_traction::closed::Lubkin;
 
-use super::build::{along_axis, identical_materials, indenter_material, substrate_material};
-use super::recipe::ContactNormal;
+use super::bodies;
+use super::recipe::{Bodies, ContactNormal};
+use super::refusal::{invalid, issue, unsupported};
 use super::Issue;
 use stickslip_scene::{ErrorKind, FieldGrid, FieldScale};
 use stickslip_scene::{
     Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate, SurfaceBoundary,
 };
-
-pub(crate) fn issue(
-    kind: ErrorKind,
-    key: &'static str,
-    message: impl Into<String>,
-    hint: impl Into<String>,
-) -> Issue {
-    Issue::new(kind, key, message).hint(hint)
-}
-
-pub(crate) fn unsupported(
-    key: &'static str,
-    message: impl Into<String>,
-    hint: impl Into<String>,
-) -> Issue {
-    issue(ErrorKind::Unsupported, key, message, hint)
-}
-
-/// A physics constructor refused a value that passed the scene's range checks.
-pub(crate) fn invalid(key: &'static str, e: impl std::fmt::Display) -> Issue {
-    issue(ErrorKind::OutOfRange, key, e.to_string(), "see the allowed range in the message")
-}
 
 /// `solver.tolerance` if `what` supports it, else a refusal naming the supported range
 /// (tolerances are never clamped).
@@ -112,7 +89,7 @@ pub(crate) fn lattice(scene: &Scene) -> Result<(), Issue> {
 /// A twisting moment on an ellipse or patches against the contact's full-slip moment about
 /// the centre of pressure on the lattice (`ContactGrid::spin_capacity`, an upper bound of
 /// the torsional capacity): above it the contact spins and no solver can carry the moment.
-pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
+pub(crate) fn spin(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
     use stickslip_lattice::ContactGrid;
     let l = &scene.load;
     if l.moment == 0.0 || l.friction <= 0.0 {
@@ -125,14 +102,9 @@ pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
             let (a, b) = match *e {
                 stickslip_scene::Ellipse::SemiAxes { a, b } => (a, b),
                 stickslip_scene::Ellipse::Radii { rx, ry } => {
-                    let sub = substrate_material(&scene.substrate)?;
-                    let ind = indenter_material(scene, &sub)?;
-                    let Ok(h) = stickslip_halfspace::hertz::HertzEllipse::new(
-                        rx,
-                        ry,
-                        p,
-                        composite_modulus(&sub, &ind),
-                    ) else {
+                    let Ok(h) =
+                        stickslip_halfspace::hertz::HertzEllipse::new(rx, ry, p, bodies.e_star)
+                    else {
                         return Ok(());
                     };
                     (h.semi_axis_x(), h.semi_axis_y())
@@ -142,9 +114,7 @@ pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
         }
         Geometry::Sphere { radius } if l.tangential != 0.0 => {
             let NormalLoad::Force(p) = l.normal else { return Ok(()) };
-            let sub = substrate_material(&scene.substrate)?;
-            let ind = indenter_material(scene, &sub)?;
-            let Ok(h) = HertzSphere::new(p, *radius, composite_modulus(&sub, &ind)) else {
+            let Ok(h) = HertzSphere::new(p, *radius, bodies.e_star) else {
                 return Ok(());
             };
             ContactGrid::hertz_circle(h.contact_radius(), p, n)
@@ -191,26 +161,22 @@ pub(crate) fn spin(scene: &Scene) -> Result<(), Issue> {
 }
 
 /// Normal load implied by a prescribed contact size, where the geometry fixes it.
-fn implied_load(scene: &Scene) -> Option<f64> {
+fn implied_load(scene: &Scene, bodies: &Bodies) -> Option<f64> {
     let a = match scene.load.normal {
         NormalLoad::HalfWidth(a) => a,
         NormalLoad::Force(p) | NormalLoad::FromPatches(p) => return Some(p),
         NormalLoad::Approach(_) => return None,
     };
-    let sub = substrate_material(&scene.substrate).ok()?;
-    let ind = indenter_material(scene, &sub).ok()?;
     match (&scene.geometry, scene.substrate) {
-        (Geometry::Cylinder { radius }, Substrate::Graded { e0, k, nu }) if k > 0.0 => {
-            let m = GradedMaterial::new(e0, k, nu).ok()?;
+        (Geometry::Cylinder { radius }, Substrate::Graded { k, .. }) if k > 0.0 => {
+            let m = bodies.graded?;
             stickslip_graded::load_from_half_width(&m, *radius, a).ok()
         }
         (Geometry::Cylinder { radius }, _) => {
-            HertzLine::from_half_width(a, *radius, composite_modulus(&sub, &ind))
-                .ok()
-                .map(|h| h.load())
+            HertzLine::from_half_width(a, *radius, bodies.e_star).ok().map(|h| h.load())
         }
         (Geometry::Sphere { radius }, _) => {
-            Some(HertzSphere::load_for_contact_radius(a, *radius, composite_modulus(&sub, &ind)))
+            Some(HertzSphere::load_for_contact_radius(a, *radius, bodies.e_star))
         }
         _ => None,
     }
@@ -218,9 +184,9 @@ fn implied_load(scene: &Scene) -> Option<f64> {
 
 /// Checks that need the contact solved in closed form: T > fP when the load is given as a
 /// half-width, Lubkin's gross-slip moment.
-pub(crate) fn capacity(scene: &Scene) -> Result<(), Issue> {
+pub(crate) fn capacity(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
     let l = &scene.load;
-    let Some(p) = implied_load(scene) else { return Ok(()) };
+    let Some(p) = implied_load(scene, bodies) else { return Ok(()) };
     if let NormalLoad::HalfWidth(_) = l.normal {
         if !l.sliding && l.tangential.abs() > l.friction * p {
             return Err(issue(
@@ -236,9 +202,7 @@ pub(crate) fn capacity(scene: &Scene) -> Result<(), Issue> {
         }
     }
     if let (Geometry::Sphere { radius }, true) = (&scene.geometry, l.moment != 0.0) {
-        let sub = substrate_material(&scene.substrate)?;
-        let ind = indenter_material(scene, &sub)?;
-        let Ok(h) = HertzSphere::new(p, *radius, composite_modulus(&sub, &ind)) else {
+        let Ok(h) = HertzSphere::new(p, *radius, bodies.e_star) else {
             return Ok(());
         };
         let mmax = Lubkin::gross_slip_moment_of(h.contact_radius(), p, l.friction);
@@ -319,7 +283,7 @@ pub(crate) fn refuse(scene: &Scene) -> Result<(), Issue> {
                 "use geometry.kind = \"cylinder\"",
             ));
         }
-        if !identical_materials(scene) {
+        if !bodies::identical(scene) {
             return Err(unsupported(
                 "indenter.model",
                 "Carter and Goryacheva solve a cylinder rolling on a base of the same material",
@@ -526,13 +490,11 @@ pub const MAX_FIELD_REACH: f64 = 10.0;
 /// (in plane and in depth): beyond, the stresses are the far field of a point load and a
 /// lattice over the box would be mostly empty.
 pub(crate) fn field_box(
-    scene: &Scene,
+    bodies: &Bodies,
     normal: &ContactNormal,
     grid: FieldGrid,
 ) -> Result<(), Issue> {
-    let sub = substrate_material(&scene.substrate)?;
-    let ind = indenter_material(scene, &sub)?;
-    let e_star = composite_modulus(&sub, &ind);
+    let e_star = bodies.e_star;
     let (ax, ay) = match normal {
         ContactNormal::Sphere { radius, force, e_star } => {
             let a = HertzSphere::new(*force, *radius, *e_star)
@@ -576,4 +538,10 @@ pub(crate) fn field_box(
         }
     }
     Ok(())
+}
+
+/// Whether an ellipse load direction lies along one of the axes (the Cattaneo closed form).
+pub(crate) fn along_axis(deg: f64) -> bool {
+    let r = deg.rem_euclid(90.0);
+    r.min(90.0 - r) < 1e-9
 }

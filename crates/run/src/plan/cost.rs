@@ -1,7 +1,7 @@
 //! The cost estimate of a plan (evaluations, seconds, memory) and the refusals of grids
 //! too large for the machine.
 
-use super::checks::issue;
+use super::refusal::issue;
 use super::{Cost, Effect, EffectPlan, Issue, Technique, MAX_LP_ELEMENTS, SURFACE_POINTS};
 use stickslip_scene::{ErrorKind, Geometry, Scene, Substrate};
 

@@ -25,11 +25,13 @@
 
 use std::fmt;
 
+mod bodies;
 mod build;
 mod checks;
 pub(crate) mod cost;
 mod machine;
 pub mod recipe;
+mod refusal;
 
 pub use cost::{human_bytes, human_seconds, MEMORY_LIMIT_BYTES};
 pub use machine::{MachineLimits, DEFAULT_TIME_LIMIT_SECONDS};

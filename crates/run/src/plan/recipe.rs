@@ -27,6 +27,36 @@ pub enum Recipe {
     Contact(ContactRecipe),
 }
 
+/// The two bodies of a scene, resolved once when it is planned: every check, recipe and
+/// stage reads the materials, the composite modulus and Dundurs' $\beta$ here, none derives
+/// them again from the scene.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bodies {
+    /// The substrate as a homogeneous material (graded: $E_0$ with its $\nu$, as the
+    /// homogeneous limit $k = 0$; viscoelastic: the long-time modulus).
+    pub substrate: Material,
+    /// The indenter (rigid, the substrate's material, or its own).
+    pub indenter: Material,
+    /// The composite modulus $E^*$ of the pair (FORMULAS.md C;
+    /// `stickslip_halfspace::material::composite_modulus`).
+    pub e_star: f64,
+    /// Dundurs' $\beta$ of the pair (0 for identical bodies;
+    /// `stickslip_halfspace::material::dundurs_beta`).
+    pub beta: f64,
+    /// True when the two bodies are of one material (per-body shares are then 1/2).
+    pub identical: bool,
+    /// The power-law graded substrate $E = E_0 y^k$ when $k > 0$.
+    pub graded: Option<GradedMaterial>,
+}
+
+impl Bodies {
+    /// `[substrate, indenter]`, as the solvers take them.
+    #[must_use]
+    pub fn pair(&self) -> [Material; 2] {
+        [self.substrate, self.indenter]
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // 2D static
 
@@ -92,10 +122,8 @@ pub enum LineNormal {
         radius: f64,
         /// Load or half-width.
         load: LineLoad,
-        /// The substrate.
-        substrate: Material,
-        /// The indenter.
-        indenter: Material,
+        /// The two bodies.
+        bodies: Bodies,
     },
     /// A rigid cylinder on the power-law graded half-plane ($k > 0$).
     Graded {
@@ -200,10 +228,9 @@ pub enum RollingModel {
 pub struct ContactRecipe {
     /// Normal contact.
     pub normal: ContactNormal,
-    /// Substrate and indenter (the indenter may be rigid).
-    pub bodies: [Material; 2],
-    /// True when the two bodies are of one material (per-body shares are 1/2).
-    pub identical: bool,
+    /// Substrate and indenter (the indenter may be rigid), with their composite modulus and
+    /// Dundurs' $\beta$.
+    pub bodies: Bodies,
     /// Elements per side of the lattice.
     pub grid: usize,
     /// Friction coefficient.
