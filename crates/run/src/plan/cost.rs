@@ -142,7 +142,7 @@ pub(crate) fn estimate(
         evals += 2 * c.points as u64 + 1;
     }
     if let Some(h) = &scene.load.history {
-        // Each step is one warm fast solve, measured at 0.8 to 0.9 of a cold one and 46 to 62
+        // Each step is one warm fast solve, measured at 0.6 to 0.9 of a cold one and 46 to 62
         // products (benches/examples/history_speed.rs, 128 and 256 across); under shift
         // control a step searches the force, about 5 solves. A surface whose normal load
         // changes adds a warm normal solve per step (costed at a third of a cold one). The
