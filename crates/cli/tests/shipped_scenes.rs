@@ -80,6 +80,7 @@ const EXCLUDED: &[(&str, &str)] = &[
 const MASKED: &[(&str, &str, &str)] = &[
     ("notes[]", "set-up ", "the fast solver's note: wall time of its set-up"),
     ("notes[]", "iteration ", "the fast solver's note: wall time of its iterations"),
+    ("notes[]", "the steps took ", "the load path's note: wall time of its steps"),
 ];
 
 /// What a masked number becomes.

@@ -106,16 +106,35 @@ pub(crate) fn render(
             }
             files.push(("surface.csv".to_string(), std::mem::take(&mut s)));
         }
-        SurfaceOut::Grid { x, y, p, qx, qy, stick, gap, slip_x, slip_y } if !x.is_empty() => {
-            // A surface's and a 3D rolling contact's maps also as (ny, nx) arrays: pressure,
-            // tractions, gap or micro-slip, contact.
-            if gap.is_some() || slip_x.is_some() {
+        SurfaceOut::Grid {
+            x,
+            y,
+            p,
+            qx,
+            qy,
+            stick,
+            gap,
+            slip_x,
+            slip_y,
+            dissipation,
+            slip_amplitude,
+        } if !x.is_empty() => {
+            // A surface's, a 3D rolling contact's and a load path's maps also as (ny, nx)
+            // arrays: pressure, tractions, gap, micro-slip or dissipation and slip range,
+            // contact.
+            if gap.is_some() || slip_x.is_some() || dissipation.is_some() {
                 let (nx, ny) = (x.len(), y.len());
                 let rows = |m: &Vec<Vec<f64>>| -> Vec<f64> {
                     (0..ny).flat_map(|j| (0..nx).map(move |i| m[i][j])).collect()
                 };
                 let mut maps = vec![("p", p), ("qx", qx), ("qy", qy)];
-                for (name, m) in [("gap", gap), ("slip_x", slip_x), ("slip_y", slip_y)] {
+                for (name, m) in [
+                    ("gap", gap),
+                    ("slip_x", slip_x),
+                    ("slip_y", slip_y),
+                    ("dissipation", dissipation),
+                    ("slip_amplitude", slip_amplitude),
+                ] {
                     if let Some(m) = m {
                         maps.push((name, m));
                     }
@@ -130,10 +149,19 @@ pub(crate) fn render(
                 binary.push(("surface_y.npy".to_string(), npy(y, &[ny])));
             }
             s.push_str("x_m,y_m,p_Pa,qx_Pa,qy_Pa,stick");
-            s.push_str(if slip_x.is_some() { ",slip_x_m_per_s,slip_y_m_per_s\n" } else { "\n" });
+            if slip_x.is_some() {
+                s.push_str(",slip_x_m_per_s,slip_y_m_per_s");
+            }
+            if dissipation.is_some() {
+                s.push_str(",dissipation_J_per_m2,slip_amplitude_m");
+            }
+            s.push('\n');
             for (i, xi) in x.iter().enumerate() {
                 for (j, yj) in y.iter().enumerate() {
-                    if stick[i][j] >= 0 {
+                    // A load path's cells that dissipated but left the contact are listed
+                    // too (their pressure is zero now).
+                    let dissipated = dissipation.as_ref().is_some_and(|d| d[i][j] != 0.0);
+                    if stick[i][j] >= 0 || dissipated {
                         let _ = write!(
                             s,
                             "{xi},{yj},{},{},{},{}",
@@ -141,6 +169,9 @@ pub(crate) fn render(
                         );
                         if let (Some(sx), Some(sy)) = (slip_x, slip_y) {
                             let _ = write!(s, ",{},{}", sx[i][j], sy[i][j]);
+                        }
+                        if let (Some(d), Some(a)) = (dissipation, slip_amplitude) {
+                            let _ = write!(s, ",{},{}", d[i][j], a[i][j]);
                         }
                         s.push('\n');
                     }
@@ -210,6 +241,28 @@ pub(crate) fn render(
             let _ = writeln!(s, "{t},{d}");
         }
         files.push(("cycle.csv".to_string(), std::mem::take(&mut s)));
+    }
+    if let Some(h) = &out.history {
+        s.push_str("step,corner,tangential_N,normal_N,moment_N_m,shift_m,rotation_rad,stick_fraction,dissipated_J,work_J,elastic_energy_J,gross_slip\n");
+        for i in 0..h.tangential.len() {
+            let corner =
+                h.corners.iter().position(|c| *c == i).map_or(String::new(), |c| c.to_string());
+            let _ = writeln!(
+                s,
+                "{i},{corner},{},{},{},{},{},{},{},{},{},{}",
+                h.tangential[i],
+                h.normal[i],
+                h.moment[i],
+                h.shift[i],
+                h.rotation[i],
+                h.stick_fraction[i],
+                h.dissipated[i],
+                h.work[i],
+                h.elastic_energy[i],
+                u8::from(h.gross_slip[i])
+            );
+        }
+        files.push(("history.csv".to_string(), std::mem::take(&mut s)));
     }
     if let Some(c) = &out.load_curve {
         s.push_str("normal_N,approach_m,area_m2,fraction,p0_Pa,iterations\n");
@@ -535,6 +588,7 @@ fn foreign_files(dir: &Path) -> Result<Vec<String>, std::io::Error> {
                 | "surface.csv"
                 | "field.csv"
                 | "cycle.csv"
+                | "history.csv"
                 | "load_curve.csv"
                 | "report.html"
         ) || ((n.ends_with(".svg") || n.ends_with(".npy")) && !n.starts_with('.'))

@@ -242,6 +242,36 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
             &format!("{:.4e} J, {:.4e} J", cy.energy_per_cycle[0], cy.energy_per_cycle[1]),
         );
     }
+    if let Some(h) = &out.history {
+        row(
+            s,
+            "load path",
+            &format!(
+                "{} control along {:.1} degrees, {} steps, {} corners",
+                h.control,
+                h.direction_deg,
+                h.tangential.len(),
+                h.corners.len()
+            ),
+        );
+        if let Some(d) = h.dissipated.last() {
+            row(s, "energy dissipated over the path", &format!("{d:.4e} J"));
+        }
+        for (i, l) in h.loops.iter().enumerate() {
+            row(
+                s,
+                &format!("loop {} (steps {} to {})", i + 1, l.first_step, l.last_step),
+                &format!(
+                    "energy {:.4e} J; force range {:.4e} N, shift range {:.4e} m, shift drift {:.3e} m",
+                    l.energy, l.force_range, l.shift_range, l.shift_drift
+                ),
+            );
+        }
+        let slides = h.gross_slip.iter().filter(|g| **g).count();
+        if slides > 0 {
+            row(s, "steps in gross slip", &slides.to_string());
+        }
+    }
     if let Some(v) = out.field.volume() {
         for (name, p) in [
             ("peak von Mises", &v.max.von_mises),

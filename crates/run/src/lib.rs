@@ -63,8 +63,9 @@ use std::path::{Path, PathBuf};
 
 pub use exec::outcome::{
     Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
-    FieldOut, FieldPeak, Forces, GridZones, NormalSolverOut, Outcome, Progress, RigidOut,
-    RollingOut, RunOptions, SolverOut, SurfaceOut, VolumeField, Zones, INLINE_FIELD_POINTS,
+    FieldOut, FieldPeak, Forces, GridZones, HistoryLoopOut, HistoryOut, NormalSolverOut, Outcome,
+    Progress, RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, VolumeField, Zones,
+    INLINE_FIELD_POINTS,
 };
 pub use overview::scenes_page;
 pub use plan::recipe::Recipe;

@@ -18,7 +18,8 @@ use stickslip_traction::{closed::Cattaneo, closed::Deresiewicz, closed::Mindlin}
 
 use crate::exec::outcome::Outcome;
 use crate::plan::recipe::{
-    ContactNormal, ContactRecipe, LineFriction, LineNormal, Recipe, RollingModel, Tangential,
+    ContactNormal, ContactRecipe, HistoryRecipe, LineFriction, LineNormal, Recipe, RollingModel,
+    Tangential,
 };
 use crate::plan::Plan;
 
@@ -39,6 +40,10 @@ pub struct References {
     pub traction: Option<Reference>,
     /// The hysteresis loop (relative displacement, T), densely sampled.
     pub cycle: Option<(Vec<f64>, Vec<f64>)>,
+    /// A load path on the Hertz circle at a constant normal load whose tangential force
+    /// swings between $-T^*$ and $T^*$: Mindlin's first loading from zero to $T^*$ and the
+    /// Mindlin–Deresiewicz loop (relative displacement, T).
+    pub history_loop: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 fn reference(label: &'static str, at: impl Fn(f64, f64) -> f64 + 'static) -> Option<Reference> {
@@ -72,6 +77,7 @@ pub fn of(plan: &Plan, out: &Outcome) -> References {
                 pressure: reference("Hertz", move |x, _| h.pressure(x)),
                 traction,
                 cycle: None,
+                history_loop: None,
             }
         }
         Recipe::Rolling(r) => match r.model {
@@ -82,6 +88,7 @@ pub fn of(plan: &Plan, out: &Outcome) -> References {
                     pressure: reference("Hertz", move |x, _| s.pressure(x)),
                     traction: reference("Carter", move |x, _| s2.shear(x)),
                     cycle: None,
+                    history_loop: None,
                 }
             }
             RollingModel::Goryacheva { .. } => References::default(),
@@ -94,6 +101,8 @@ fn contact(r: &ContactRecipe, out: &Outcome) -> References {
     let mut refs = References::default();
     match r.normal {
         ContactNormal::Sphere { radius, force, e_star } => {
+            // A load path ends at its last normal load.
+            let force = if r.history.is_some() { out.contact.normal_load } else { force };
             let Ok(h) = HertzSphere::new(force, radius, e_star) else { return refs };
             let a = h.contact_radius();
             refs.pressure = reference("Hertz", move |x, y| h.pressure(x.hypot(y)));
@@ -107,6 +116,9 @@ fn contact(r: &ContactRecipe, out: &Outcome) -> References {
                 if let Ok(m) = Mindlin::new(a, force, r.friction, q) {
                     refs.traction = reference("Mindlin", move |x, y| m.traction(x.hypot(y)).abs());
                 }
+            }
+            if let Some(h) = &r.history {
+                refs.history_loop = history_loop(r, h, a, force);
             }
             if let (Some(_), Some(c)) = (r.cycle, &out.cycle) {
                 if let Ok(d) = Deresiewicz::new(a, force, r.friction, c.amplitude) {
@@ -123,6 +135,7 @@ fn contact(r: &ContactRecipe, out: &Outcome) -> References {
             }
         }
         ContactNormal::Ellipse { rx, ry, force, e_star } => {
+            let force = if r.history.is_some() { out.contact.normal_load } else { force };
             let Ok(h) = HertzEllipse::new(rx, ry, force, e_star) else { return refs };
             let (ax, ay) = (h.semi_axis_x(), h.semi_axis_y());
             refs.pressure = reference("Hertz", move |x, y| h.pressure(x, y));
@@ -162,6 +175,39 @@ fn cattaneo(r: &ContactRecipe, ax: f64, ay: f64, force: f64) -> Option<Reference
         let (u, v) = if along_x { (x, y) } else { (y, x) };
         c.traction(u, v).abs()
     })
+}
+
+/// Mindlin's first loading and the Mindlin–Deresiewicz loop of a force-controlled path on the
+/// Hertz circle of radius `a` under the constant normal load `force`, when its corners swing
+/// symmetrically between $-T^*$ and $T^*$ (FORMULAS.md E; relative displacement, both
+/// bodies).
+fn history_loop(
+    r: &ContactRecipe,
+    h: &HistoryRecipe,
+    a: f64,
+    force: f64,
+) -> Option<(Vec<f64>, Vec<f64>)> {
+    let constant = h.normal.iter().all(|p| (p - force).abs() <= 1e-9 * force);
+    let force_control = h.control == stickslip_scene::HistoryControl::Force;
+    let hi = h.tangential.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let lo = h.tangential.iter().copied().fold(f64::INFINITY, f64::min);
+    if !(constant && force_control && h.moment.is_none() && hi > 0.0 && lo == -hi) {
+        return None;
+    }
+    let d = Deresiewicz::new(a, force, r.friction, hi).ok()?;
+    let [sub, ind] = &r.bodies.pair();
+    let n = 200;
+    let (l1, l2) = (d.hysteresis_loop(sub, n).ok()?, d.hysteresis_loop(ind, n).ok()?);
+    let (mut x, mut y) = (Vec::new(), Vec::new());
+    for i in 0..=n {
+        let t = hi * i as f64 / n as f64;
+        let m = Mindlin::new(a, force, r.friction, t).ok()?;
+        x.push(m.compliance_relative(sub, ind));
+        y.push(t);
+    }
+    x.extend(l1.iter().zip(&l2).map(|(p, q)| p.1 + q.1));
+    y.extend(l1.iter().map(|p| p.0));
+    Some((x, y))
 }
 
 #[cfg(test)]

@@ -303,6 +303,29 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             }
             expect("loop area = 2 W", area.abs(), 2.0 * w, tol::LOOP_AREA);
         }
+        "sphere_fretting_history.toml" => {
+            // The load path's two loops against Mindlin-Deresiewicz's energy per cycle
+            // (FORMULAS.md E), both bodies.
+            let h = out.history.as_ref().unwrap();
+            let (p, f) = (2160.0 * LBF, 0.1);
+            let nu = 0.3;
+            let g = 30e6 * PSI / 2.6;
+            let t = 0.5;
+            let bracket = 1.0
+                - (1.0f64 - t).powf(5.0 / 3.0)
+                - 5.0 * t / 6.0 * (1.0 + (1.0f64 - t).powf(2.0 / 3.0));
+            let w = 9.0 * (2.0 - nu) * f * f * p * p / (10.0 * g * c.a) * bracket;
+            assert_eq!(h.loops.len(), 2);
+            for l in &h.loops {
+                expect(
+                    "energy per cycle vs 2 W (FORMULAS.md E)",
+                    l.energy,
+                    2.0 * w,
+                    tol::HISTORY_LOOP,
+                );
+            }
+            assert!(out.audit.passed);
+        }
         "two_patch_joint_twist.toml" => {
             let (_, _, mz, _) = grid_resultant(out);
             expect("moment of the element tractions", mz, 40.0, 1e-6);

@@ -278,6 +278,29 @@ pub(crate) struct RawLoad {
     /// A twisting moment about the contact normal (force x length, e.g. "0.5 N m").
     #[schemars(with = "Option<Qty>")]
     pub moment: Option<SQty>,
+    /// A load path solved step by step from the previous state (a static 3D contact).
+    #[schemars(with = "Option<RawHistory>")]
+    pub history: Option<Spanned<RawHistory>>,
+}
+
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawHistory {
+    /// Corner values of the tangential force along direction_deg (forces, e.g. ["0 N", "20 N", "-20 N", "20 N"]), applied in order.
+    #[schemars(with = "Option<Vec<Qty>>")]
+    pub tangential: Option<Spanned<Vec<SQty>>>,
+    /// Instead of tangential: corner values of the rigid tangential shift of the bodies (lengths, e.g. ["0 um", "2 um", "-2 um"]); beyond the onset of sliding the contact slides.
+    #[schemars(with = "Option<Vec<Qty>>")]
+    pub shift: Option<Spanned<Vec<SQty>>>,
+    /// Corner values of the normal load (forces, as many as the tangential values); load.normal throughout when absent.
+    #[schemars(with = "Option<Vec<Qty>>")]
+    pub normal: Option<Spanned<Vec<SQty>>>,
+    /// Corner values of the twisting moment (force x length, as many as the tangential values).
+    #[schemars(with = "Option<Vec<Qty>>")]
+    pub moment: Option<Spanned<Vec<SQty>>>,
+    /// Linear sub-steps between two corners, 1 to 10000 (default 10).
+    #[schemars(with = "Option<i64>")]
+    pub steps: Option<Spanned<i64>>,
 }
 
 #[derive(Debug, Deserialize, JsonSchema)]

@@ -839,6 +839,125 @@ pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, 
             }
         }
     }
+    if let SurfaceOut::Grid {
+        x, y, stick, dissipation: Some(d), slip_amplitude: Some(sa), ..
+    } = &out.surface
+    {
+        if !x.is_empty() && !y.is_empty() {
+            let tr = |m: &Vec<Vec<f64>>| -> Vec<Vec<f64>> {
+                (0..y.len()).map(|j| (0..x.len()).map(|i| m[i][j]).collect()).collect()
+            };
+            let outline = stick_outline(x, y, stick);
+            for (file, title, name, base, m) in [
+                (
+                    "dissipation.svg",
+                    "energy dissipated per area over the load path",
+                    "D",
+                    "J/m^2",
+                    d,
+                ),
+                (
+                    "slip_amplitude.svg",
+                    "largest slip range over the load path (peak to peak)",
+                    "slip range",
+                    "m",
+                    sa,
+                ),
+            ] {
+                let v = tr(m);
+                files.push((
+                    file.to_string(),
+                    heat_map(&Map {
+                        title: format!("{st}: {title} (white: final stick zone outline)"),
+                        sub,
+                        name,
+                        base,
+                        x,
+                        y,
+                        v: &v,
+                        yflip: false,
+                        yname: "y",
+                        outline: &outline,
+                    })?,
+                ));
+            }
+        }
+    }
+    if let Some(h) = &out.history {
+        let mut curves = vec![Curve {
+            dashed: false,
+            label: "load path",
+            x: &h.shift,
+            y: &h.tangential,
+            colour: blue,
+        }];
+        if let Some((rx, ry)) = &refs.history_loop {
+            curves.push(Curve {
+                dashed: true,
+                label: "Mindlin-Deresiewicz",
+                x: rx,
+                y: ry,
+                colour: grey,
+            });
+        }
+        files.push((
+            "history_loop.svg".to_string(),
+            line_chart(
+                (&format!("{st}: tangential force against rigid shift along the path"), sub),
+                ("rigid shift", "m"),
+                ("T", "N"),
+                &curves,
+                &[],
+            )?,
+        ));
+        let step: Vec<f64> = (0..h.tangential.len()).map(|i| i as f64).collect();
+        files.push((
+            "history_stick.svg".to_string(),
+            line_chart(
+                (
+                    &format!(
+                        "{st}: stick fraction along the path (cells not slipping in the step)"
+                    ),
+                    sub,
+                ),
+                ("step", ""),
+                ("stick fraction", ""),
+                &[Curve {
+                    dashed: false,
+                    label: "stick fraction",
+                    x: &step,
+                    y: &h.stick_fraction,
+                    colour: blue,
+                }],
+                &[],
+            )?,
+        ));
+        files.push((
+            "history_energy.svg".to_string(),
+            line_chart(
+                (&format!("{st}: energy along the path"), sub),
+                ("step", ""),
+                ("energy", "J"),
+                &[
+                    Curve {
+                        dashed: false,
+                        label: "dissipated",
+                        x: &step,
+                        y: &h.dissipated,
+                        colour: red,
+                    },
+                    Curve {
+                        dashed: true,
+                        label: "stored (elastic)",
+                        x: &step,
+                        y: &h.elastic_energy,
+                        colour: blue,
+                    },
+                ],
+                &[],
+            )?,
+        ));
+    }
     if let Some(c) = &out.cycle {
         let mut curves =
             vec![Curve { dashed: false, label: "result", x: &c.delta, y: &c.t, colour: blue }];

@@ -49,6 +49,9 @@ impl Builder {
 /// The Coulomb limit, resultant limit and residual limit of the plan's method.
 fn limits(plan: &Plan) -> (f64, Option<f64>) {
     match &plan.recipe {
+        Recipe::Contact(ContactRecipe { history: Some(h), .. }) => {
+            (h.tolerance.max(1e-9), Some(h.tolerance))
+        }
         Recipe::Contact(ContactRecipe {
             tangential: Some(Tangential::Grid(GridStep { tolerance, .. })),
             ..
@@ -255,6 +258,7 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
 /// The unit direction of the tangential force of a 3D recipe.
 fn grid_direction(plan: &Plan) -> (f64, f64) {
     let d = match &plan.recipe {
+        Recipe::Contact(ContactRecipe { history: Some(h), .. }) => h.direction,
         Recipe::Contact(r) => match r.tangential {
             Some(Tangential::Mindlin { force } | Tangential::Cattaneo { force, .. }) => {
                 force.direction - if force.signed < 0.0 { std::f64::consts::PI } else { 0.0 }

@@ -15,6 +15,10 @@ pub(crate) struct Lattice {
     pub stick: Vec<Vec<i8>>,
     /// 3D rolling: micro-slip velocity (x, y) per cell (m/s).
     pub slip: Option<[Vec<Vec<f64>>; 2]>,
+    /// A load path: energy dissipated per unit area over the path (J/m^2).
+    pub dissipation: Option<Vec<Vec<f64>>>,
+    /// A load path: slip range per cell (m).
+    pub slip_range: Option<Vec<Vec<f64>>>,
 }
 
 impl Lattice {
@@ -28,6 +32,8 @@ impl Lattice {
             qy: vec![vec![0.0; ny]; nx],
             stick: vec![vec![-1; ny]; nx],
             slip: None,
+            dissipation: None,
+            slip_range: None,
         }
     }
 
@@ -62,6 +68,8 @@ impl Lattice {
             qy: self.qy,
             stick: self.stick,
             gap,
+            dissipation: self.dissipation,
+            slip_amplitude: self.slip_range,
         }
     }
 }

@@ -7,7 +7,7 @@
 //! |---|---|
 //! | [`Recipe::Line`] | `normal` (2D) → `friction` (2D traction) → `surface` → `field` |
 //! | [`Recipe::Rolling`] | `rolling` (normal and tangential together) |
-//! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) or `roll3d` (3D steady rolling: exact, FASTSIM, Polach) → `cycle` → `field` |
+//! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) or `roll3d` (3D steady rolling: exact, FASTSIM, Polach) or `history` (a load path, step by step; its final state goes on) → `cycle` → `field` |
 //!
 //! Every stage increments the evaluation counter of the effects it computes
 //! ([`Evaluations`]), so a test can prove that an effect that is off costs nothing. Adding a
@@ -22,6 +22,7 @@ mod cycle;
 mod field;
 mod friction;
 mod grid;
+mod history;
 mod lattice;
 mod normal;
 pub(crate) mod outcome;
@@ -87,6 +88,7 @@ pub(crate) struct Parts {
     pub field: Field,
     pub rolling: Option<RollingOut>,
     pub cycle: Option<CycleOut>,
+    pub history: Option<outcome::HistoryOut>,
     pub load_curve: Option<outcome::LoadCurve>,
 }
 
@@ -228,6 +230,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         },
         rolling: parts.rolling,
         cycle: parts.cycle,
+        history: parts.history,
         load_curve: parts.load_curve,
         audit: Default::default(),
         evaluations: cx.ev,
@@ -272,6 +275,7 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
         field: Field::Plane(field),
         rolling: None,
         cycle: None,
+        history: None,
         load_curve: None,
     })
 }
@@ -284,6 +288,12 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         return contact_parts(r, n, lat, t, cx);
     }
     let n = normal::contact(r, cx)?;
+    if let Some(h) = &r.history {
+        let (n, lat, t, hist) = history::run(r, h, &n, cx)?;
+        let mut parts = contact_parts(r, n, lat, t, cx)?;
+        parts.history = Some(hist);
+        return Ok(parts);
+    }
     let mut lat = n.lattice.clone();
     let t = match r.tangential {
         None => friction::none(&mut lat, r.friction),
@@ -353,6 +363,7 @@ fn contact_parts(
         field,
         rolling: None,
         cycle,
+        history: None,
         load_curve,
     })
 }

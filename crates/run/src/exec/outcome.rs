@@ -223,6 +223,14 @@ pub enum SurfaceOut {
         /// 3D rolling: micro-slip velocity along y (m/s).
         #[serde(skip_serializing_if = "Option::is_none")]
         slip_y: Option<Vec<Vec<f64>>>,
+        /// A load path: the energy dissipated per unit area over the whole path (J/m^2);
+        /// absent otherwise.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        dissipation: Option<Vec<Vec<f64>>>,
+        /// A load path: the largest slip range of each cell over the path (m, peak to
+        /// peak; docs/load-histories.md); absent otherwise.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        slip_amplitude: Option<Vec<Vec<f64>>>,
     },
 }
 
@@ -494,6 +502,60 @@ pub struct CycleOut {
     pub energy_per_cycle: [f64; 2],
 }
 
+/// `history` in result.json: a load path solved step by step (`[load.history]`;
+/// docs/load-histories.md), one value per step in each column.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HistoryOut {
+    /// "force" or "shift": what the path prescribes along `direction_deg`.
+    pub control: &'static str,
+    /// Direction of the tangential load (degrees from +x).
+    pub direction_deg: f64,
+    /// The step of each corner (step 0 is the first corner).
+    pub corners: Vec<usize>,
+    /// Tangential force along the direction (N), the resultant of the solved traction.
+    pub tangential: Vec<f64>,
+    /// Normal force (N).
+    pub normal: Vec<f64>,
+    /// Twisting moment about the path's centre (N m).
+    pub moment: Vec<f64>,
+    /// Rigid tangential displacement of the bodies along the direction (m), relative.
+    pub shift: Vec<f64>,
+    /// Rigid rotation (rad), with a moment.
+    pub rotation: Vec<f64>,
+    /// Cells that do not slip in the step over the cells in contact.
+    pub stick_fraction: Vec<f64>,
+    /// Energy dissipated since the start (J).
+    pub dissipated: Vec<f64>,
+    /// Work of the tangential loads since the start (J); work = stored + dissipated.
+    pub work: Vec<f64>,
+    /// Elastic energy stored by the tangential traction (J).
+    pub elastic_energy: Vec<f64>,
+    /// Whether the contact slides (gross slip) in the step.
+    pub gross_slip: Vec<bool>,
+    /// The closed cycles, with their energy.
+    pub loops: Vec<HistoryLoopOut>,
+}
+
+/// One closed cycle of a load path.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HistoryLoopOut {
+    /// Step where the loop starts (a turning point).
+    pub first_step: usize,
+    /// Step where it closes.
+    pub last_step: usize,
+    /// Energy dissipated over the loop: the energy per cycle (J).
+    pub energy: f64,
+    /// Work of the loads over the loop (J): the loop's area by the trapezoidal rule.
+    pub work: f64,
+    /// Range of the tangential force over the loop (N).
+    pub force_range: f64,
+    /// Range of the shift over the loop (m).
+    pub shift_range: f64,
+    /// Shift at the end minus at the start (m): non-zero under force control means
+    /// ratcheting.
+    pub shift_drift: f64,
+}
+
 /// `audit` in result.json: every check run on the result before it is written.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct Audit {
@@ -530,6 +592,9 @@ pub struct Outcome {
     /// Loading cycle, when asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cycle: Option<CycleOut>,
+    /// A load path solved step by step, when `[load.history]` is given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub history: Option<HistoryOut>,
     /// A surface's load sweep: the area-load and approach-load curves.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_curve: Option<LoadCurve>,

@@ -156,6 +156,7 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
             response,
         }),
         cycle: None,
+        history: None,
         load_curve: None,
     })
 }

@@ -15,9 +15,9 @@ use super::checks::{self, along_axis, tolerance_for};
 use super::cost::{self, lattice_elements};
 use super::recipe::{
     Bodies, ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, Creepage, CycleRecipe,
-    Force, GridMethod, GridStep, LineDisplacements, LineField, LineFieldMethod, LineFriction,
-    LineLoad, LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod, RollingModel,
-    RollingRecipe, RollingStep, SurfaceLoad, Tangential,
+    Force, GridMethod, GridStep, HistoryRecipe, LineDisplacements, LineField, LineFieldMethod,
+    LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod,
+    RollingModel, RollingRecipe, RollingStep, SurfaceLoad, Tangential,
 };
 use super::refusal::{invalid, unsupported};
 use super::{Effect, EffectPlan, Issue, Plan, Technique, SURFACE_POINTS};
@@ -81,6 +81,10 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     };
     let effects = effects(scene, &bodies, &recipe, &mut notes);
     let grid_solver = match &recipe {
+        Recipe::Contact(ContactRecipe { history: Some(_), .. }) => Some(
+            "a load path: the fast solver, one warm solve per step from the step before"
+                .to_string(),
+        ),
         Recipe::Contact(ContactRecipe { tangential: Some(Tangential::Grid(_)), .. }) => grid_reason,
         _ => None,
     };
@@ -517,8 +521,13 @@ fn contact_recipe(
     } else {
         None
     };
+    let history = match &l.history {
+        Some(h) => Some(history_recipe(scene, h, &normal)?),
+        None => None,
+    };
     let lattice_output = scene.outputs.surface
         || matches!(tangential, Some(Tangential::Grid(_) | Tangential::Rolling(_)))
+        || history.is_some()
         || scene.outputs.field.is_some();
     let cycle =
         scene.outputs.cycle.map(|c| CycleRecipe { amplitude: c.amplitude, points: c.points });
@@ -530,7 +539,9 @@ fn contact_recipe(
                 _ => None,
             };
             let method = match (&normal, frictionless, sliding) {
-                _ if scene.solver.method == Method::Fast => ContactFieldMethod::Lattice,
+                _ if scene.solver.method == Method::Fast || history.is_some() => {
+                    ContactFieldMethod::Lattice
+                }
                 (ContactNormal::Sphere { .. }, true, _) => ContactFieldMethod::HertzSphere,
                 (
                     ContactNormal::Sphere { .. }
@@ -557,6 +568,7 @@ fn contact_recipe(
             friction: f,
             tangential,
             cycle,
+            history,
             lattice_output,
             field,
             coupling: (couple
@@ -568,6 +580,45 @@ fn contact_recipe(
         },
         grid_reason,
     ))
+}
+
+/// The recipe of a load path: the fast solver (no other solver takes a path), a free
+/// boundary (the history has no periodic operator), the normal load per corner.
+fn history_recipe(
+    scene: &Scene,
+    h: &stickslip_scene::History,
+    normal: &ContactNormal,
+) -> Result<HistoryRecipe, Issue> {
+    if !matches!(scene.solver.method, Method::Auto | Method::Fast) {
+        return Err(unsupported(
+            "solver.method",
+            "a load path is solved by the fast solver, step by step",
+            "use method = \"auto\" or \"fast\"",
+        ));
+    }
+    if let ContactNormal::Surface { surface, .. } = normal {
+        if surface.boundary == SurfaceBoundary::Periodic {
+            return Err(unsupported(
+                "load.history",
+                "a load path on a periodic surface is not solved in this version",
+                "use geometry.boundary = \"free\"",
+            ));
+        }
+    }
+    let constant = match scene.load.normal {
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) => p,
+        // validation refuses a path under anything but a normal force
+        _ => return Err(half_width_refused()),
+    };
+    Ok(HistoryRecipe {
+        control: h.control,
+        direction: scene.load.direction_deg.to_radians(),
+        tangential: h.tangential.clone(),
+        normal: (0..h.tangential.len()).map(|i| h.normal_at(i, constant)).collect(),
+        moment: h.moment.clone(),
+        steps: h.steps,
+        tolerance: tolerance_for(scene, "the fast solver", FastConfig::TOLERANCE_RANGE)?,
+    })
 }
 
 // ---------------------------------------------------------------------------------------
@@ -602,7 +653,10 @@ impl Recipe {
                 LineFriction::GradedPartialSlip { .. } => Technique::GradedPartialSlip,
             }),
             Recipe::Rolling(r) => Some(r.model.technique()),
-            Recipe::Contact(r) => r.tangential.map(|t| t.technique()),
+            Recipe::Contact(r) => match (&r.history, r.tangential) {
+                (Some(_), _) => Some(Technique::LoadHistory),
+                (None, t) => t.map(|t| t.technique()),
+            },
         }
     }
 }
@@ -661,7 +715,9 @@ fn effects(
 
     let rolling = matches!(scene.motion, Motion::Rolling { .. } | Motion::RollingCreepage { .. });
     let f = l.friction;
-    let friction_cause = if l.tangential != 0.0 {
+    let friction_cause = if l.history.is_some() {
+        Some("a load path ([load.history])")
+    } else if l.tangential != 0.0 {
         Some("a tangential load")
     } else if l.sliding {
         Some("sliding = true")
@@ -773,20 +829,51 @@ fn effects(
         _ => effects.push(off(E::Rolling, "motion is static".to_string())),
     }
 
-    match (recipe, l.moment != 0.0) {
-        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true) => {
+    let path_moment = l.history.as_ref().and_then(|h| h.moment.as_ref());
+    match (recipe, l.moment != 0.0, path_moment) {
+        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true, _) => {
             effects.push(on(E::Twist, format!("moment M = {} N m", l.moment), t.technique()))
         }
+        (Recipe::Contact(_), _, Some(m)) => effects.push(on(
+            E::Twist,
+            format!("a moment along the load path ({} corner values)", m.len()),
+            Technique::LoadHistory,
+        )),
         _ => effects.push(off(E::Twist, "no twisting moment".to_string())),
     }
 
-    match scene.outputs.cycle {
-        Some(c) => effects.push(on(
+    match (&l.history, scene.outputs.cycle) {
+        (Some(h), cycle) => {
+            let what = match h.control {
+                stickslip_scene::HistoryControl::Force => "tangential force",
+                stickslip_scene::HistoryControl::Shift => "shift",
+            };
+            let mut reason = format!(
+                "[load.history]: {} corners of the {what}{}{}, {} steps between corners; each step solved from the one before",
+                h.tangential.len(),
+                if h.normal.is_some() { " and the normal load" } else { "" },
+                if h.moment.is_some() { " and the moment" } else { "" },
+                h.steps
+            );
+            if let Some(c) = cycle {
+                reason.push_str(&format!(
+                    "; outputs.cycle with T*/(fP) = {} beside it (Mindlin-Deresiewicz closed form)",
+                    c.amplitude
+                ));
+            }
+            if let Recipe::Contact(c) = recipe {
+                if !c.bodies.identical && c.bodies.beta != 0.0 {
+                    notes.push(format!("the load path neglects the normal-tangential coupling (Dundurs beta = {:.4}; exact for beta = 0)", c.bodies.beta));
+                }
+            }
+            effects.push(on(E::Hysteresis, reason, Technique::LoadHistory));
+        }
+        (None, Some(c)) => effects.push(on(
             E::Hysteresis,
             format!("outputs.cycle with T*/(fP) = {}", c.amplitude),
             Technique::Deresiewicz,
         )),
-        None => effects.push(off(E::Hysteresis, "no outputs.cycle".to_string())),
+        (None, None) => effects.push(off(E::Hysteresis, "no outputs.cycle".to_string())),
     }
 
     match recipe {

@@ -24,7 +24,7 @@ pub(crate) fn estimate(
     let surface_points = if two_d && scene.outputs.surface { SURFACE_POINTS } else { 0 };
     let grid_elements = elements;
     let lp = effects.iter().any(|e| matches!(e.technique, Some(T::LpForce | T::LpMoment)));
-    let fast = effects.iter().any(|e| e.technique == Some(T::Fast));
+    let fast = effects.iter().any(|e| matches!(e.technique, Some(T::Fast | T::LoadHistory)));
     let steady = effects.iter().any(|e| e.technique == Some(T::SteadyRolling));
     if lp && grid_elements > MAX_LP_ELEMENTS {
         return Err(issue(
@@ -148,6 +148,25 @@ pub(crate) fn estimate(
     }
     if let Some(c) = scene.outputs.cycle {
         evals += 2 * c.points as u64 + 1;
+    }
+    if let Some(h) = &scene.load.history {
+        // Each step is one warm fast solve, measured at 0.6 to 0.9 of a cold one and 46 to 62
+        // products (benches/examples/history_speed.rs, 128 and 256 across); under shift
+        // control a step searches the force, about 5 solves. A surface whose normal load
+        // changes adds a warm normal solve per step (costed at a third of a cold one). The
+        // path state is about 25 doubles per cell.
+        let steps = ((h.tangential.len().max(1) - 1) * h.steps + 1) as f64;
+        let solves = match h.control {
+            stickslip_scene::HistoryControl::Force => steps,
+            stickslip_scene::HistoryControl::Shift => 5.0 * steps,
+        };
+        secs += solves * 0.9 * fast_seconds(cells);
+        evals += (solves as u64) * grid_elements as u64 * 60;
+        mem += cells as u64 * 25 * 8;
+        if let (Geometry::Surface(sf), Some(_)) = (&scene.geometry, &h.normal) {
+            let n = (sf.cells[0] * sf.cells[1]) as f64;
+            secs += steps * 0.34 * (n / 65536.0).powf(1.45) / 3.0;
+        }
     }
     Ok((
         surface_points,

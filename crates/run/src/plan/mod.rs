@@ -56,7 +56,8 @@ pub enum Effect {
     Rolling,
     /// A twisting moment about the contact normal.
     Twist,
-    /// A Mindlin–Deresiewicz loading cycle.
+    /// Hysteresis: a Mindlin–Deresiewicz loading cycle (closed form), or a load path solved
+    /// step by step.
     Hysteresis,
     /// Subsurface stresses on a grid.
     SubsurfaceField,
@@ -179,11 +180,15 @@ pub enum Technique {
     Fastsim,
     /// Polach's creep-force law: `stickslip_rolling::steady3d::polach`.
     Polach,
+    /// A load path solved step by step from the previous state (incremental Coulomb
+    /// friction, each step the fast solver's problem with the memory $-K\mathbf q^{n-1}$;
+    /// docs/load-histories.md): `stickslip_traction::history::HistoryProblem`.
+    LoadHistory,
 }
 
 impl Technique {
     /// Every technique, in the order of declaration.
-    pub const ALL: [Technique; 30] = [
+    pub const ALL: [Technique; 31] = [
         Technique::HertzLine,
         Technique::GradedCylinder,
         Technique::FlatPunch,
@@ -214,6 +219,7 @@ impl Technique {
         Technique::Polach,
         Technique::HamiltonSlidingField,
         Technique::HertzEllipseField,
+        Technique::LoadHistory,
     ];
 
     /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
@@ -250,6 +256,7 @@ impl Technique {
             Technique::Polach => 27,
             Technique::HamiltonSlidingField => 28,
             Technique::HertzEllipseField => 29,
+            Technique::LoadHistory => 30,
         }
     }
 
@@ -268,6 +275,7 @@ impl Technique {
                 | Technique::SurfaceContact
                 | Technique::SteadyRolling
                 | Technique::Fastsim
+                | Technique::LoadHistory
         )
     }
 
@@ -333,6 +341,9 @@ impl Technique {
             }
             Technique::Polach => {
                 "Polach's closed creep-force law (no spin; FORMULAS.md R3); force error up to 0.15 fN against the exact theory"
+            }
+            Technique::LoadHistory => {
+                "load path step by step from the previous state (incremental Coulomb friction, each step a warm fast solve; docs/load-histories.md), numerical"
             }
         }
     }

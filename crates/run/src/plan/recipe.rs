@@ -239,6 +239,9 @@ pub struct ContactRecipe {
     pub tangential: Option<Tangential>,
     /// A Mindlin–Deresiewicz cycle (a sphere only), when asked.
     pub cycle: Option<CycleRecipe>,
+    /// A load path solved step by step (`[load.history]`); it replaces the tangential step
+    /// and leaves the path's final state in the lattice.
+    pub history: Option<HistoryRecipe>,
     /// Whether the lattice arrays go into the result.
     pub lattice_output: bool,
     /// Subsurface stresses on a box of points, when asked.
@@ -427,4 +430,24 @@ pub struct CycleRecipe {
     pub amplitude: f64,
     /// Points along the loop.
     pub points: usize,
+}
+
+/// A load path (`[load.history]`) on a 3D contact, solved by the fast solver step by step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryRecipe {
+    /// Force or shift control.
+    pub control: stickslip_scene::HistoryControl,
+    /// Direction of the tangential load (rad from +x).
+    pub direction: f64,
+    /// Corner values of the tangential force (N) or shift (m) along `direction`.
+    pub tangential: Vec<f64>,
+    /// Corner values of the normal load (N), the scene's `load.normal` where the path gives
+    /// none.
+    pub normal: Vec<f64>,
+    /// Corner values of the moment (N m), if the path has one.
+    pub moment: Option<Vec<f64>>,
+    /// Sub-steps between corners.
+    pub steps: usize,
+    /// Relative tolerance of every step's fast solve.
+    pub tolerance: f64,
 }

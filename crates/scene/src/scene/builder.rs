@@ -51,6 +51,7 @@ impl SceneBuilder {
                     sliding: false,
                     moment: 0.0,
                     normal_sweep: None,
+                    history: None,
                 },
                 motion: Motion::Static,
                 outputs: Outputs { surface: true, field: None, cycle: None, plots: false },
@@ -124,6 +125,12 @@ impl SceneBuilder {
     /// Subsurface stresses on a grid.
     pub fn field(mut self, grid: FieldGrid) -> Self {
         self.scene.outputs.field = Some(grid);
+        self
+    }
+
+    /// A load path (`[load.history]`), solved step by step.
+    pub fn history(mut self, history: super::History) -> Self {
+        self.scene.load.history = Some(history);
         self
     }
 

@@ -347,7 +347,7 @@ pub enum NormalLoad {
 }
 
 /// Loads and friction.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Load {
     /// Normal load.
     pub normal: NormalLoad,
@@ -363,6 +363,50 @@ pub struct Load {
     pub moment: f64,
     /// A load sweep up to `normal` (a surface only): the area–load and approach–load curves.
     pub normal_sweep: Option<NormalSweep>,
+    /// `[load.history]`: a load path solved step by step (a static 3D contact).
+    pub history: Option<History>,
+}
+
+/// `[load.history]`: a load path of corner values applied in order, `steps` linear
+/// sub-steps between two corners, each step solved from the one before (Coulomb friction
+/// has memory). The tangential value acts along `load.direction_deg`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct History {
+    /// Force control (`tangential`, N) or shift control (`shift`, m).
+    pub control: HistoryControl,
+    /// Corner values of the tangential force (N) or of the rigid shift (m).
+    pub tangential: Vec<f64>,
+    /// Corner values of the normal load (N); None: `load.normal` throughout.
+    pub normal: Option<Vec<f64>>,
+    /// Corner values of the twisting moment (N m); None: no moment (no rotation).
+    pub moment: Option<Vec<f64>>,
+    /// Sub-steps between two corners (default 10).
+    pub steps: usize,
+}
+
+/// What a load path prescribes along `load.direction_deg`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HistoryControl {
+    /// The tangential force (key `tangential`).
+    Force,
+    /// The rigid tangential shift of the bodies (key `shift`); beyond the onset of sliding
+    /// the contact slides.
+    Shift,
+}
+
+impl History {
+    /// The default number of sub-steps between two corners.
+    pub const DEFAULT_STEPS: usize = 10;
+    /// The largest number of sub-steps between two corners.
+    pub const MAX_STEPS: usize = 10_000;
+    /// The largest number of corners.
+    pub const MAX_CORNERS: usize = 10_000;
+
+    /// The normal load at corner `i`: the path's, or `constant` (`load.normal`).
+    #[must_use]
+    pub fn normal_at(&self, i: usize, constant: f64) -> f64 {
+        self.normal.as_ref().map_or(constant, |n| n[i])
+    }
 }
 
 /// A normal-load sweep from `from` to the scene's `load.normal` in `steps` geometric steps.

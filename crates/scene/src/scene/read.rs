@@ -16,8 +16,9 @@ use std::sync::Arc;
 use toml::Spanned;
 
 use super::{
-    Cycle, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion, NormalLoad,
-    Outputs, Patch, PatchShape, Scene, SolverOptions, Source, Substrate,
+    Cycle, Ellipse, FieldGrid, FieldScale, Geometry, History, HistoryControl, Indenter, Load,
+    Method, Motion, NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Source,
+    Substrate,
 };
 use crate::error::{ErrorKind, SceneError};
 use crate::raw::{Qty, RawNormal, RawScene, SQty};
@@ -492,6 +493,10 @@ fn finish_load(
         Some(m) => cx.qty(m, "load.moment", Dim::MOMENT, "moment")?,
         None => 0.0,
     };
+    let history = match &l.history {
+        Some(h) => Some(history(cx, h, force_dim, force_name)?),
+        None => None,
+    };
     Ok(Load {
         normal,
         tangential,
@@ -500,7 +505,63 @@ fn finish_load(
         sliding: l.sliding.unwrap_or(false),
         moment,
         normal_sweep: None,
+        history,
     })
+}
+
+/// `[load.history]`: the corner values with their units, each element's span recorded as
+/// `load.history.<key>[i]` so that a refusal points at the corner.
+fn history(
+    cx: &Reader<'_>,
+    h: &Spanned<crate::raw::RawHistory>,
+    force_dim: Dim,
+    force_name: &'static str,
+) -> Result<History, SceneError> {
+    cx.record("load.history", h.span());
+    let r = h.get_ref();
+    let list = |v: &Spanned<Vec<SQty>>, key: &str, dim: Dim, name: &'static str| {
+        cx.record(key, v.span());
+        v.get_ref()
+            .iter()
+            .enumerate()
+            .map(|(i, q)| cx.qty(q, &format!("{key}[{i}]"), dim, name))
+            .collect::<Result<Vec<f64>, SceneError>>()
+    };
+    let (control, tangential) = match (&r.tangential, &r.shift) {
+        (Some(t), None) => {
+            (HistoryControl::Force, list(t, "load.history.tangential", force_dim, force_name)?)
+        }
+        (None, Some(d)) => {
+            (HistoryControl::Shift, list(d, "load.history.shift", Dim::LENGTH, "shift")?)
+        }
+        _ => {
+            return Err(cx
+                .err(
+                    ErrorKind::Schema,
+                    "load.history",
+                    Some(h.span()),
+                    "give exactly one of `tangential` (force control) and `shift` (displacement control)",
+                )
+                .hint("e.g. tangential = [\"0 N\", \"20 N\", \"-20 N\", \"20 N\"]"))
+        }
+    };
+    let normal = match &r.normal {
+        Some(n) => Some(list(n, "load.history.normal", force_dim, force_name)?),
+        None => None,
+    };
+    let moment = match &r.moment {
+        Some(m) => Some(list(m, "load.history.moment", Dim::MOMENT, "moment")?),
+        None => None,
+    };
+    let steps = match &r.steps {
+        Some(s) => {
+            cx.record("load.history.steps", s.span());
+            let v = *s.get_ref();
+            usize::try_from(v).unwrap_or(0)
+        }
+        None => History::DEFAULT_STEPS,
+    };
+    Ok(History { control, tangential, normal, moment, steps })
 }
 
 fn motion(cx: &Reader<'_>, raw: &RawScene) -> Result<Motion, SceneError> {

@@ -8,8 +8,8 @@
 //! indenter, load, motion, outputs, solver), so the first problem of a file is reported.
 
 use super::{
-    Cycle, Elastic, Ellipse, FieldGrid, Geometry, Indenter, Motion, NormalLoad, Outputs, Patch,
-    PatchShape, Scene, SolverOptions, Substrate, MAX_GRID,
+    Cycle, Elastic, Ellipse, FieldGrid, Geometry, History, HistoryControl, Indenter, Motion,
+    NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Substrate, MAX_GRID,
 };
 use crate::error::{ErrorKind, Issue};
 
@@ -19,6 +19,7 @@ pub(crate) fn validate(scene: &Scene) -> Result<(), Issue> {
     substrate(&scene.substrate)?;
     indenter(&scene.indenter)?;
     load(scene)?;
+    history(scene)?;
     motion(scene)?;
     outputs(&scene.outputs, scene.geometry.is_2d())?;
     solver(&scene.solver)
@@ -405,6 +406,145 @@ fn load(scene: &Scene) -> Result<(), Issue> {
                 ),
             )
             .hint("reduce T below f P, or set sliding = true"));
+        }
+    }
+    Ok(())
+}
+
+/// `[load.history]`: a load path on a static 3D contact with friction, under a normal
+/// force; corner lists of one length; positive normal loads; under force control no corner
+/// beyond the friction capacity f P (the bodies would slide and accelerate).
+#[allow(clippy::too_many_lines)]
+fn history(scene: &Scene) -> Result<(), Issue> {
+    let l = &scene.load;
+    let Some(h) = &l.history else { return Ok(()) };
+    let key = |k: &str, i: usize| format!("load.history.{k}[{i}]");
+    let (list, what) = match h.control {
+        HistoryControl::Force => ("tangential", "force"),
+        HistoryControl::Shift => ("shift", "shift"),
+    };
+    if scene.geometry.is_2d() {
+        return Err(Issue::new(
+            ErrorKind::Unsupported,
+            "load.history",
+            "a load path is solved on 3D contacts",
+        )
+        .hint("use geometry.kind = sphere, ellipsoid, patches or surface"));
+    }
+    if scene.motion != Motion::Static {
+        return Err(Issue::new(
+            ErrorKind::Unsupported,
+            "load.history",
+            "a load path is solved for a static contact",
+        )
+        .hint("remove [motion], or remove [load.history]"));
+    }
+    if l.sliding {
+        return Err(Issue::new(
+            ErrorKind::Impossible,
+            "load.sliding",
+            "a load path finds sliding where it happens; full sliding is not prescribed with it",
+        )
+        .hint("remove sliding = true (a shift path slides beyond its onset)"));
+    }
+    for (k, v) in [("load.tangential", l.tangential), ("load.moment", l.moment)] {
+        if v != 0.0 {
+            return Err(Issue::new(
+                ErrorKind::Impossible,
+                k,
+                format!(
+                    "{k} = {v} is given beside a load path, which prescribes the tangential load"
+                ),
+            )
+            .hint(format!("remove {k}; give its values along the path in [load.history]")));
+        }
+    }
+    if l.friction <= 0.0 || l.friction.is_nan() {
+        return Err(Issue::new(
+            ErrorKind::Impossible,
+            "load.friction",
+            "a load path on a frictionless contact carries no tangential load",
+        )
+        .hint("give load.friction > 0"));
+    }
+    let constant = match l.normal {
+        NormalLoad::Force(p) | NormalLoad::FromPatches(p) if l.normal_sweep.is_none() => p,
+        _ => {
+            return Err(Issue::new(
+                ErrorKind::Unsupported,
+                "load.normal",
+                "a load path is solved under a normal force (one value), not a half-width, an approach or a sweep",
+            )
+            .hint("give load.normal = P (the path's normal load where [load.history] has no normal)"))
+        }
+    };
+    if !(1..=History::MAX_STEPS).contains(&h.steps) {
+        return Err(Issue::new(
+            ErrorKind::OutOfRange,
+            "load.history.steps",
+            format!("{} steps between corners", h.steps),
+        )
+        .hint(format!("an integer from 1 to {}", History::MAX_STEPS)));
+    }
+    let n = h.tangential.len();
+    if !(1..=History::MAX_CORNERS).contains(&n) {
+        return Err(Issue::new(
+            ErrorKind::OutOfRange,
+            &format!("load.history.{list}"),
+            format!("{n} corners"),
+        )
+        .hint(format!("from 1 to {} corner values", History::MAX_CORNERS)));
+    }
+    for (i, v) in h.tangential.iter().enumerate() {
+        finite(&key(list, i), *v)?;
+    }
+    for (k, other) in [("normal", &h.normal), ("moment", &h.moment)] {
+        if let Some(v) = other {
+            if v.len() != n {
+                return Err(Issue::new(
+                    ErrorKind::Schema,
+                    &format!("load.history.{k}"),
+                    format!("{} values for {n} corners of load.history.{list}", v.len()),
+                )
+                .hint(format!("give one {k} value per corner ({n})")));
+            }
+            for (i, x) in v.iter().enumerate() {
+                finite(&key(k, i), *x)?;
+            }
+        }
+    }
+    if let Some(v) = &h.normal {
+        if let Some((i, p)) = v.iter().enumerate().find(|(_, p)| **p <= 0.0) {
+            return Err(Issue::new(
+                ErrorKind::Impossible,
+                &key("normal", i),
+                format!("the normal load reaches {p} N at corner {i}: the bodies separate"),
+            )
+            .hint("keep the normal load > 0 at every corner (a path that separates the bodies is not solved)"));
+        }
+    }
+    if h.moment.is_some() && h.control == HistoryControl::Shift {
+        return Err(Issue::new(
+            ErrorKind::Unsupported,
+            "load.history.moment",
+            "a moment on a shift-controlled path is not solved",
+        )
+        .hint("prescribe the tangential force (tangential = [...]) with the moment"));
+    }
+    if h.control == HistoryControl::Force {
+        for (i, t) in h.tangential.iter().enumerate() {
+            let cap = l.friction * h.normal_at(i, constant);
+            if t.abs() > cap * (1.0 + 1e-12) {
+                return Err(Issue::new(
+                    ErrorKind::Impossible,
+                    &key(list, i),
+                    format!(
+                        "at corner {i} the tangential {what} |T| = {} N exceeds f P = {cap} N: no equilibrium, the bodies slide",
+                        t.abs()
+                    ),
+                )
+                .hint("keep |T| <= f P at every corner, or prescribe the shift (shift = [...]) to let the contact slide"));
+            }
         }
     }
     Ok(())

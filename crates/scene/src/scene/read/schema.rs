@@ -151,6 +151,17 @@ static LOAD: Table = Table {
         f("friction", Kind::Num),
         f("sliding", Kind::Bool),
         f("moment", Kind::Qty("\"0.5 N m\"")),
+        f("history", Kind::Table(&HISTORY)),
+    ],
+};
+
+static HISTORY: Table = Table {
+    fields: &[
+        f("tangential", Kind::QtyArray("[\"0 N\", \"20 N\", \"-20 N\", \"20 N\"]")),
+        f("shift", Kind::QtyArray("[\"0 um\", \"2 um\", \"-2 um\"]")),
+        f("normal", Kind::QtyArray("[\"100 N\", \"100 N\", \"80 N\", \"100 N\"]")),
+        f("moment", Kind::QtyArray("[\"0 N m\", \"0.1 N m\", \"-0.1 N m\"]")),
+        f("steps", Kind::Int),
     ],
 };
 
@@ -217,7 +228,7 @@ static TOP: Table = Table {
 };
 
 /// Every table of the format with its dotted name, to say where a misplaced key belongs.
-fn tables() -> [(&'static str, &'static Table); 12] {
+fn tables() -> [(&'static str, &'static Table); 13] {
     [
         ("geometry", &GEOMETRY),
         ("geometry.profile", &PROFILE),
@@ -226,6 +237,7 @@ fn tables() -> [(&'static str, &'static Table); 12] {
         ("substrate", &SUBSTRATE),
         ("indenter", &INDENTER),
         ("load", &LOAD),
+        ("load.history", &HISTORY),
         ("motion", &MOTION),
         ("outputs", &OUTPUTS),
         ("outputs.field", &FIELD),

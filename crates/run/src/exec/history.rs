@@ -1,0 +1,504 @@
+//! Stage 2 of a load path (`[load.history]`): the path solved step by step from the previous
+//! state by `stickslip_traction::history` (docs/load-histories.md). It replaces the
+//! tangential step: the run's state is the path's final state (its pressure, traction and
+//! stick/slip map on the lattice, its loads and rigid shift), and `history` in result.json
+//! carries one value per step, the loops and their energies; the lattice gains the energy
+//! dissipated per area and the slip range of every cell.
+//!
+//! The lattice covers the largest contact along the path: for a Hertz sphere or ellipse a
+//! box over the contact at the largest normal load (`solver.grid` cells across), each step's
+//! pressure Hertz's at its load sampled at the cell centres and scaled so the cell forces sum
+//! to the load; for given semi-axes the same shape scaled; for patches the patches' pressures
+//! scaled to the load; for a surface the normal-contact solver at each load (warm-started).
+
+use std::cell::RefCell;
+use std::f64::consts::PI;
+
+use stickslip_halfspace::hertz::{HertzEllipse, HertzSphere};
+use stickslip_lattice::ContactGrid;
+use stickslip_normal::{NormalLoad as TNormalLoad, NormalProblem, NormalSolution};
+use stickslip_traction::history::{HistoryProblem, LoadPath, PathControl};
+use stickslip_traction::{ElementState, Error as TractionError, FastConfig, LoadKind, Tolerance};
+
+use super::friction::TangentialOut;
+use super::lattice::Lattice;
+use super::normal::{surface_err, surface_gap, surface_solution, ContactSolution};
+use super::outcome::{GridZones, HistoryLoopOut, HistoryOut, RigidOut, Zones};
+use super::{solver_err, Ctx};
+use crate::plan::recipe::{ContactNormal, ContactRecipe, HistoryRecipe};
+use stickslip_scene::{ErrorKind, HistoryControl, SceneError};
+
+/// Errors of the pressure model and of the history, kept apart until they are located.
+enum Fail {
+    Scene(SceneError),
+    Traction(TractionError),
+}
+
+impl From<TractionError> for Fail {
+    fn from(e: TractionError) -> Self {
+        Fail::Traction(e)
+    }
+}
+
+/// The semi-axes of a Hertz contact under a normal load.
+type SemiAxes<'a> = Box<dyn Fn(f64) -> Result<(f64, f64), SceneError> + 'a>;
+
+/// A surface's normal-contact solver, its operator, the last pressure (the next solve's
+/// start) and the last solution.
+struct SurfaceSolver<'a> {
+    problem: NormalProblem<'a>,
+    op: stickslip_normal::NormalOperator,
+    warm: RefCell<Option<Vec<f64>>>,
+    last: RefCell<Option<NormalSolution>>,
+}
+
+/// How each step's pressure is made on the history's lattice.
+enum Pressure<'a> {
+    /// A Hertz ellipse (a circle when the radii are equal) whose semi-axes follow the load.
+    Hertz { semi_axes: SemiAxes<'a> },
+    /// A fixed shape scaled to the load (given semi-axes; patches).
+    Scaled { shape: Vec<f64> },
+    /// The normal-contact solver of a surface.
+    Surface(Box<SurfaceSolver<'a>>),
+}
+
+/// The history's lattice: its grid (every cell that may touch), the result lattice it maps
+/// to, and the pressure model.
+struct Setup<'a> {
+    grid: ContactGrid,
+    lattice: Lattice,
+    pressure: Pressure<'a>,
+}
+
+/// Hertz pressure of semi-axes (a, b) on `grid`'s cells, scaled so the cell forces sum to
+/// `load` (as `ContactGrid::hertz_ellipse` samples it).
+fn hertz_on(grid: &ContactGrid, a: f64, b: f64, load: f64) -> Result<Vec<f64>, SceneError> {
+    let mut p: Vec<f64> = grid
+        .x
+        .iter()
+        .zip(&grid.y)
+        .map(|(x, y)| (1.0 - (x / a).powi(2) - (y / b).powi(2)).max(0.0).sqrt())
+        .collect();
+    let sum: f64 = p.iter().sum::<f64>() * grid.element_area();
+    if sum <= 0.0 {
+        return Err(SceneError::new(
+            ErrorKind::Solver,
+            format!(
+                "the contact at the normal load {load:.4e} N (semi-axes {a:.3e} x {b:.3e} m) holds no cell centre of the lattice"
+            ),
+        )
+        .key("solver.grid")
+        .hint("raise solver.grid, or keep the path's smallest normal load closer to its largest"));
+    }
+    p.iter_mut().for_each(|v| *v *= load / sum);
+    Ok(p)
+}
+
+/// A box of `n` x `n` cells over [-ax, ax] x [-ay, ay], every cell an element.
+fn box_grid(ax: f64, ay: f64, n: usize) -> Result<(ContactGrid, Lattice), SceneError> {
+    let (hx, hy) = (2.0 * ax / n as f64, 2.0 * ay / n as f64);
+    let grid =
+        ContactGrid::from_mask(hx, hy, (-ax, -ay), n, n, &vec![true; n * n], &vec![0.0; n * n])
+            .map_err(|e| solver_err("history lattice", e))?;
+    Ok((grid, Lattice::new(-ax, -ay, hx, hy, n, n)))
+}
+
+/// The lattice and pressure model of the path; `gap` is a surface's initial gap
+/// ([`surface_gap`]), empty otherwise.
+fn setup<'a>(
+    r: &'a ContactRecipe,
+    n0: &ContactSolution,
+    pmax: f64,
+    gap: &'a [f64],
+) -> Result<Setup<'a>, SceneError> {
+    let n = r.grid;
+    Ok(match &r.normal {
+        ContactNormal::Sphere { radius, e_star, .. } => {
+            let axes = move |p: f64| {
+                HertzSphere::new(p, *radius, *e_star)
+                    .map(|h| (h.contact_radius(), h.contact_radius()))
+                    .map_err(|e| solver_err("Hertz sphere", e))
+            };
+            let (a, _) = axes(pmax)?;
+            let (grid, lattice) = box_grid(a, a, n)?;
+            Setup { grid, lattice, pressure: Pressure::Hertz { semi_axes: Box::new(axes) } }
+        }
+        ContactNormal::Ellipse { rx, ry, e_star, .. } => {
+            let axes = move |p: f64| {
+                HertzEllipse::new(*rx, *ry, p, *e_star)
+                    .map(|h| (h.semi_axis_x(), h.semi_axis_y()))
+                    .map_err(|e| solver_err("Hertz ellipse", e))
+            };
+            let (a, b) = axes(pmax)?;
+            let (grid, lattice) = box_grid(a, b, n)?;
+            Setup { grid, lattice, pressure: Pressure::Hertz { semi_axes: Box::new(axes) } }
+        }
+        ContactNormal::EllipseGiven { a, b, .. } => {
+            let (grid, lattice) = box_grid(*a, *b, n)?;
+            let shape = hertz_on(&grid, *a, *b, 1.0)?;
+            Setup { grid, lattice, pressure: Pressure::Scaled { shape } }
+        }
+        ContactNormal::Patches(_) => {
+            let total = n0.grid.total_normal_force();
+            let shape = n0.grid.pressure.iter().map(|p| p / total).collect();
+            let mut lattice = n0.lattice.clone();
+            for row in &mut lattice.stick {
+                row.fill(-1);
+            }
+            Setup { grid: n0.grid.clone(), lattice, pressure: Pressure::Scaled { shape } }
+        }
+        ContactNormal::Surface { surface, tolerance, .. } => {
+            let [nx, ny] = surface.cells;
+            let (hx, hy) = (surface.size[0] / nx as f64, surface.size[1] / ny as f64);
+            let (x0, y0) = (-0.5 * surface.size[0], -0.5 * surface.size[1]);
+            let tol = Tolerance::relative(*tolerance).map_err(|e| solver_err("tolerance", e))?;
+            let problem = NormalProblem::new(
+                nx,
+                ny,
+                (hx, hy),
+                gap,
+                r.bodies.pair(),
+                stickslip_normal::Boundary::Free,
+            )
+            .map_err(surface_err)?
+            .with_tolerance(tol);
+            let op = problem.operator();
+            let grid = ContactGrid::from_mask(
+                hx,
+                hy,
+                (x0, y0),
+                nx,
+                ny,
+                &vec![true; nx * ny],
+                &vec![0.0; nx * ny],
+            )
+            .map_err(|e| solver_err("history lattice", e))?;
+            Setup {
+                grid,
+                lattice: Lattice::new(x0, y0, hx, hy, nx, ny),
+                pressure: Pressure::Surface(Box::new(SurfaceSolver {
+                    problem,
+                    op,
+                    warm: RefCell::new(None),
+                    last: RefCell::new(None),
+                })),
+            }
+        }
+    })
+}
+
+impl Pressure<'_> {
+    /// The pressure of every history cell under the normal load `p`.
+    fn at(&self, grid: &ContactGrid, p: f64) -> Result<Vec<f64>, SceneError> {
+        match self {
+            Pressure::Hertz { semi_axes } => {
+                let (a, b) = semi_axes(p)?;
+                hertz_on(grid, a, b, p)
+            }
+            Pressure::Scaled { shape } => Ok(shape.iter().map(|s| s * p).collect()),
+            Pressure::Surface(sv) => {
+                let w = sv.warm.borrow().clone();
+                let s = sv
+                    .problem
+                    .solve_with(&sv.op, TNormalLoad::Force(p), w.as_deref())
+                    .map_err(surface_err)?;
+                *sv.warm.borrow_mut() = Some(s.pressure.clone());
+                let out = s.pressure.clone();
+                *sv.last.borrow_mut() = Some(s);
+                Ok(out)
+            }
+        }
+    }
+}
+
+/// Solve the path of `h` and return the final state as the run's normal solution, lattice
+/// and tangential result, with `history` for result.json.
+#[allow(clippy::too_many_lines)]
+pub(crate) fn run(
+    r: &ContactRecipe,
+    h: &HistoryRecipe,
+    n0: &ContactSolution,
+    cx: &mut Ctx<'_>,
+) -> Result<(ContactSolution, Lattice, TangentialOut, HistoryOut), SceneError> {
+    let pmax = h.normal.iter().copied().fold(0.0, f64::max);
+    let gap = match &r.normal {
+        ContactNormal::Surface { surface, .. } => surface_gap(surface),
+        _ => Vec::new(),
+    };
+    let st = setup(r, n0, pmax, &gap)?;
+    let control = match h.control {
+        HistoryControl::Force => PathControl::Force,
+        HistoryControl::Shift => PathControl::Shift,
+    };
+    let mut path = LoadPath::new(control, h.tangential.clone(), h.normal.clone(), h.steps)
+        .map_err(|e| history_err(h, e))?;
+    if let Some(m) = &h.moment {
+        path = path.with_moment(m.clone()).map_err(|e| history_err(h, e))?;
+    }
+    let config = FastConfig::new(
+        Tolerance::relative(h.tolerance).map_err(|e| solver_err("tolerance", e))?,
+        FastConfig::default().max_iterations(),
+    )
+    .map_err(|e| solver_err("fast solver configuration", e))?;
+    let problem = HistoryProblem::new(&st.grid, r.bodies.pair(), r.friction)
+        .and_then(|p| p.with_angle(h.direction))
+        .map_err(|e| history_err(h, e))?
+        .with_config(config);
+    let total = path.points().len();
+    cx.progress("load path", 0, total);
+    let out =
+        problem.run(&path, |p| st.pressure.at(&st.grid, p).map_err(Fail::Scene)).map_err(|e| {
+            match e {
+                Fail::Scene(e) => e,
+                Fail::Traction(e) => history_err(h, e),
+            }
+        })?;
+    cx.progress("load path", total, total);
+    let steps = &out.steps;
+    let last = *steps.last().ok_or_else(|| solver_err("load path", "no step"))?;
+    let cells = st.grid.len() as u64;
+    cx.ev.friction += cells * steps.len() as u64;
+    cx.ev.hysteresis += steps.len() as u64;
+    if h.moment.is_some() {
+        cx.ev.twist += cells * steps.len() as u64;
+    }
+    cx.solve_seconds = steps.iter().map(|s| s.seconds).sum();
+    cx.elements = st.grid.len();
+    cx.iterations = steps.iter().map(|s| s.newton_iterations).sum();
+    cx.inner_iterations = steps.iter().map(|s| s.products).sum();
+    cx.residual = steps.iter().map(|s| s.residual).fold(0.0, f64::max);
+
+    // The final state on the result lattice.
+    let mut lat = st.lattice.clone();
+    let (nx, ny) = (lat.x.len(), lat.y.len());
+    let mut dissipation = vec![vec![0.0; ny]; nx];
+    let mut slip_range = vec![vec![0.0; ny]; nx];
+    let mut states = Vec::new();
+    for k in 0..st.grid.len() {
+        let Some((i, j)) = lat.index(st.grid.x[k], st.grid.y[k]) else { continue };
+        let p = out.pressure[k];
+        lat.p[i][j] = p;
+        (lat.qx[i][j], lat.qy[i][j]) = out.traction[k];
+        lat.stick[i][j] = if p > 0.0 { i8::from(out.state[k] == ElementState::Stick) } else { -1 };
+        dissipation[i][j] = out.dissipation[k];
+        slip_range[i][j] = out.slip_range[k];
+        if p > 0.0 {
+            states.push(out.state[k]);
+        }
+    }
+    lat.dissipation = Some(dissipation);
+    lat.slip_range = Some(slip_range);
+
+    // The final contact: Hertz's at the final load, or the surface's last normal solve.
+    let pfinal = last.normal;
+    let contact_grid = {
+        let keep: Vec<usize> = (0..st.grid.len()).filter(|&k| out.pressure[k] > 0.0).collect();
+        ContactGrid {
+            hx: st.grid.hx,
+            hy: st.grid.hy,
+            x: keep.iter().map(|&k| st.grid.x[k]).collect(),
+            y: keep.iter().map(|&k| st.grid.y[k]).collect(),
+            pressure: keep.iter().map(|&k| out.pressure[k]).collect(),
+            patch: keep.iter().map(|&k| st.grid.patch[k]).collect(),
+        }
+    };
+    let pmax_final = out.pressure.iter().copied().fold(0.0, f64::max);
+    let n = match (&r.normal, &st.pressure) {
+        (ContactNormal::Sphere { radius, e_star, .. }, _) => {
+            let hz = HertzSphere::new(pfinal, *radius, *e_star)
+                .map_err(|e| solver_err("Hertz sphere", e))?;
+            ContactSolution {
+                ax: hz.contact_radius(),
+                ay: hz.contact_radius(),
+                p0: hz.max_pressure(),
+                load: pfinal,
+                indentation: Some(hz.approach()),
+                grid: contact_grid,
+                lattice: lat.clone(),
+                surface: None,
+            }
+        }
+        (ContactNormal::Ellipse { rx, ry, e_star, .. }, _) => {
+            let hz = HertzEllipse::new(*rx, *ry, pfinal, *e_star)
+                .map_err(|e| solver_err("Hertz ellipse", e))?;
+            ContactSolution {
+                ax: hz.semi_axis_x(),
+                ay: hz.semi_axis_y(),
+                p0: hz.max_pressure(),
+                load: pfinal,
+                indentation: Some(hz.approach()),
+                grid: contact_grid,
+                lattice: lat.clone(),
+                surface: None,
+            }
+        }
+        (ContactNormal::EllipseGiven { a, b, .. }, _) => ContactSolution {
+            ax: *a,
+            ay: *b,
+            p0: 3.0 * pfinal / (2.0 * PI * a * b),
+            load: pfinal,
+            indentation: None,
+            grid: contact_grid,
+            lattice: lat.clone(),
+            surface: None,
+        },
+        (ContactNormal::Patches(_), _) => ContactSolution {
+            ax: n0.ax,
+            ay: n0.ay,
+            p0: pmax_final,
+            load: pfinal,
+            indentation: None,
+            grid: contact_grid,
+            lattice: lat.clone(),
+            surface: None,
+        },
+        (ContactNormal::Surface { surface, tolerance, .. }, Pressure::Surface(sv)) => {
+            let sol = sv
+                .last
+                .borrow_mut()
+                .take()
+                .ok_or_else(|| solver_err("load path", "no normal solve"))?;
+            let mut s = surface_solution(surface, &sol, *tolerance, None, cx)?;
+            s.lattice = lat.clone();
+            s.grid = contact_grid;
+            s
+        }
+        (ContactNormal::Surface { .. }, _) => {
+            return Err(solver_err("load path", "a surface without its normal solver"))
+        }
+    };
+
+    // The moment about the final centre of pressure (the audit's), from the prescribed one
+    // about the history's centre: M_cp = M_c + (c - c_p) x F.
+    let moment = if h.moment.is_some() {
+        let (sp, spx, spy) = out.pressure.iter().enumerate().fold((0.0, 0.0, 0.0), |a, (k, p)| {
+            (a.0 + p, a.1 + p * st.grid.x[k], a.2 + p * st.grid.y[k])
+        });
+        let cp = if sp > 0.0 { (spx / sp, spy / sp) } else { (0.0, 0.0) };
+        let area = st.grid.element_area();
+        out.traction
+            .iter()
+            .enumerate()
+            .map(|(k, q)| area * ((st.grid.x[k] - cp.0) * q.1 - (st.grid.y[k] - cp.1) * q.0))
+            .sum()
+    } else {
+        0.0
+    };
+    let gz = GridZones::from_states(&states);
+    let loops: Vec<HistoryLoopOut> = out
+        .loops
+        .iter()
+        .map(|l| HistoryLoopOut {
+            first_step: l.first_step,
+            last_step: l.last_step,
+            energy: l.energy,
+            work: l.work,
+            force_range: l.force_range,
+            shift_range: l.shift_range,
+            shift_drift: l.shift_drift,
+        })
+        .collect();
+    cx.notes.push(format!(
+        "load path: {} steps ({} corners, {} between), {} fast solves, {} Newton steps, {} operator products, largest residual {:.2e}; the steps took {:.3} s; {} loop{}{}; energy dissipated over the path {:.6e} J",
+        steps.len(),
+        h.tangential.len(),
+        h.steps,
+        steps.iter().map(|s| s.solves).sum::<usize>(),
+        cx.iterations,
+        cx.inner_iterations,
+        cx.residual,
+        cx.solve_seconds,
+        loops.len(),
+        if loops.len() == 1 { "" } else { "s" },
+        if loops.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " (energy per cycle {})",
+                loops.iter().map(|l| format!("{:.6e} J", l.energy)).collect::<Vec<_>>().join(", ")
+            )
+        },
+        last.dissipated
+    ));
+    if steps.iter().any(|s| s.regime == stickslip_traction::Regime::GrossSlip) {
+        cx.notes.push(format!(
+            "load path: the contact slides (gross slip) in {} of its steps",
+            steps.iter().filter(|s| s.regime == stickslip_traction::Regime::GrossSlip).count()
+        ));
+    }
+    let hist = HistoryOut {
+        control: match h.control {
+            HistoryControl::Force => "force",
+            HistoryControl::Shift => "shift",
+        },
+        direction_deg: h.direction.to_degrees(),
+        corners: (0..h.tangential.len()).map(|i| path.corner_step(i)).collect(),
+        tangential: steps.iter().map(|s| s.tangential).collect(),
+        normal: steps.iter().map(|s| s.normal).collect(),
+        moment: steps.iter().map(|s| s.moment).collect(),
+        shift: steps.iter().map(|s| s.shift).collect(),
+        rotation: steps.iter().map(|s| s.rotation).collect(),
+        stick_fraction: steps.iter().map(|s| s.stick_fraction).collect(),
+        dissipated: steps.iter().map(|s| s.dissipated).collect(),
+        work: steps.iter().map(|s| s.work).collect(),
+        elastic_energy: steps.iter().map(|s| s.elastic_energy).collect(),
+        gross_slip: steps
+            .iter()
+            .map(|s| s.regime == stickslip_traction::Regime::GrossSlip)
+            .collect(),
+        loops,
+    };
+    let t = TangentialOut {
+        creep: None,
+        tangential: last.tangential,
+        moment,
+        rigid: RigidOut {
+            tangential: Some(last.shift),
+            rotation: h.moment.is_some().then_some(last.rotation),
+            per_body: None,
+        },
+        zones: Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: Some(gz) },
+    };
+    Ok((n, lat, t, hist))
+}
+
+/// A history error as a scene error: a corner beyond the capacity or a step the solver
+/// cannot carry names the path's key; non-convergence names `solver.tolerance`.
+fn history_err(h: &HistoryRecipe, e: TractionError) -> SceneError {
+    use TractionError as E;
+    let list = match h.control {
+        HistoryControl::Force => "tangential",
+        HistoryControl::Shift => "shift",
+    };
+    match e {
+        E::PathCorner { corner, .. } => SceneError::new(
+            ErrorKind::Impossible,
+            format!("the load path cannot be solved at corner {corner}: {e}"),
+        )
+        .key(format!("load.history.{list}[{corner}]"))
+        .hint("keep the load within what friction carries at every corner (a force and a moment together are carried only below gross slip), or prescribe the shift"),
+        E::HistoryStep { step, source } => {
+            let corner = step / h.steps.max(1);
+            let key = format!("load.history.{list}[{}]", (corner + 1).min(h.tangential.len() - 1));
+            match *source {
+                E::CapacityExceeded { load, .. } | E::NoStickLeft { load, .. } => SceneError::new(
+                    ErrorKind::Impossible,
+                    format!(
+                        "step {step} of the load path (after corner {corner}): the {} is at or beyond what friction carries: {source}",
+                        if load == LoadKind::Moment { "moment" } else { "load" }
+                    ),
+                )
+                .key(key)
+                .hint("reduce the load along the path below gross slip, or prescribe the shift (shift = [...]) to slide"),
+                E::NotConverged { .. } => SceneError::new(
+                    ErrorKind::Solver,
+                    format!("step {step} of the load path (after corner {corner}): {source}"),
+                )
+                .key("solver.tolerance")
+                .hint("raise solver.tolerance (e.g. 1e-8), or use more steps between corners"),
+                other => solver_err(&format!("load path step {step}"), other),
+            }
+        }
+        other => solver_err("load path", other),
+    }
+}
