@@ -222,11 +222,13 @@ pub(crate) fn wheel_layer(
             n[j * lat.nx + i0] = c.n;
             dn[j * lat.nx + i0] = c.dn_ds;
             for dir in [-1i64, 1] {
-                let mut guess = (c.t, c.theta);
+                // Each cell starts from the straight continuation of the last two.
+                let (mut last, mut before) = ((c.t, c.theta), (c.t, c.theta));
                 let mut i = i0 as i64 + dir;
                 while i >= 0 && (i as usize) < lat.nx {
+                    let guess = (2.0 * last.0 - before.0, 2.0 * last.1 - before.1);
                     let p = solve(lat.x(i as usize), s, guess)?;
-                    guess = (p.t, p.theta);
+                    (before, last) = (last, (p.t, p.theta));
                     n[j * lat.nx + i as usize] = p.n;
                     dn[j * lat.nx + i as usize] = p.dn_ds;
                     i += dir;
@@ -235,13 +237,13 @@ pub(crate) fn wheel_layer(
             Ok((c.t, c.theta))
         };
     let first = column(j0, (f.wheel_t, f.wheel_theta), &mut n, &mut dn)?;
-    let mut start = first;
-    for j in (0..j0).rev() {
-        start = column(j, start, &mut n, &mut dn)?;
-    }
-    start = first;
-    for j in j0 + 1..lat.ns {
-        start = column(j, start, &mut n, &mut dn)?;
+    // Columns outwards, each from the straight continuation of the last two centres.
+    for range in [(0..j0).rev().collect::<Vec<_>>(), (j0 + 1..lat.ns).collect()] {
+        let (mut last, mut before) = (first, first);
+        for j in range {
+            let guess = (2.0 * last.0 - before.0, 2.0 * last.1 - before.1);
+            (before, last) = (last, column(j, guess, &mut n, &mut dn)?);
+        }
     }
     Ok((n, dn))
 }
