@@ -15,20 +15,8 @@
 use rustfft::num_complex::Complex;
 use rustfft::FftPlanner;
 use std::f64::consts::PI;
-
-/// SplitMix64 (Steele, Lea & Flood 2014), uniform in [0, 1).
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn uniform(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+use stickslip_lattice::operator::complex_fft2;
+use stickslip_lattice::roughness::SplitMix;
 
 /// The band of the benchmark surface, cycles per period.
 pub const K_LOW: usize = 4;
@@ -73,19 +61,7 @@ pub fn rough_heights(n: usize, k_low: usize, k_high: usize, hurst: f64, seed: u6
     }
     let mut planner = FftPlanner::new();
     let fft = planner.plan_fft_inverse(n);
-    for row in f.chunks_exact_mut(n) {
-        fft.process(row);
-    }
-    let mut col = vec![Complex::new(0.0, 0.0); n];
-    for i in 0..n {
-        for j in 0..n {
-            col[j] = f[j * n + i];
-        }
-        fft.process(&mut col);
-        for j in 0..n {
-            f[j * n + i] = col[j];
-        }
-    }
+    complex_fft2(&*fft, &*fft, n, n, &mut f);
     f.iter().map(|c| c.re).collect()
 }
 

@@ -54,11 +54,14 @@ fn bad(name: &'static str, value: f64, allowed: &'static str) -> Error {
 }
 
 /// SplitMix64 (Steele, Lea & Flood 2014): one 64-bit state, a full-period stream of
-/// well-mixed values; uniform in [0, 1) from the top 53 bits.
-struct SplitMix(u64);
+/// well-mixed values; uniform in [0, 1) from the top 53 bits. Public so that other
+/// synthetic surfaces (the benchmark surfaces of `stickslip-benches`) draw the same stream.
+#[derive(Debug, Clone)]
+pub struct SplitMix(pub u64);
 
 impl SplitMix {
-    fn uniform(&mut self) -> f64 {
+    /// The next value, uniform in [0, 1).
+    pub fn uniform(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -155,19 +158,7 @@ fn fft2(f: &mut [Complex<f64>], nx: usize, ny: usize, inverse: bool) {
     } else {
         (planner.plan_fft_forward(nx), planner.plan_fft_forward(ny))
     };
-    for r in f.chunks_exact_mut(nx) {
-        row.process(r);
-    }
-    let mut buf = vec![Complex::new(0.0, 0.0); ny];
-    for i in 0..nx {
-        for j in 0..ny {
-            buf[j] = f[j * nx + i];
-        }
-        col.process(&mut buf);
-        for j in 0..ny {
-            f[j * nx + i] = buf[j];
-        }
-    }
+    crate::operator::complex_fft2(&*row, &*col, nx, ny, f);
 }
 
 fn rms_of(h: &[f64]) -> f64 {

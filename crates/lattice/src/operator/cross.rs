@@ -3,7 +3,7 @@
 //! under pressure, free (zero-padded FFT of the exact rectangle kernels) or periodic (the
 //! continuous Fourier transfers on the period, mean mode zero).
 
-use super::{fast_size, signed};
+use super::{complex_fft2, fast_size, signed};
 use rustfft::num_complex::Complex;
 use rustfft::Fft;
 use std::sync::Arc;
@@ -63,7 +63,7 @@ impl CrossOperator {
         let mut op = Self { nx, ny, mx, my, row, col, spec: [vec![], vec![], vec![], vec![]] };
         let scale = 1.0 / (mx * my) as f64;
         for (s, mut l) in op.spec.iter_mut().zip(lay) {
-            op_fft(&op.row[0], &op.col[0], mx, my, &mut l);
+            complex_fft2(&*op.row[0], &*op.col[0], mx, my, &mut l);
             for v in &mut l {
                 *v *= scale;
             }
@@ -114,12 +114,12 @@ impl CrossOperator {
                 out[j * self.mx + i] = C64::new(a[j * self.nx + i], 0.0);
             }
         }
-        op_fft(&self.row[0], &self.col[0], self.mx, self.my, &mut out);
+        complex_fft2(&*self.row[0], &*self.col[0], self.mx, self.my, &mut out);
         out
     }
 
     fn back(&self, mut s: Vec<C64>) -> Vec<f64> {
-        op_fft(&self.row[1], &self.col[1], self.mx, self.my, &mut s);
+        complex_fft2(&*self.row[1], &*self.col[1], self.mx, self.my, &mut s);
         let mut out = vec![0.0; self.nx * self.ny];
         for j in 0..self.ny {
             for i in 0..self.nx {
@@ -151,22 +151,5 @@ impl CrossOperator {
         let sx: Vec<C64> = a.iter().zip(&self.spec[2]).map(|(a, k)| a * k).collect();
         let sy: Vec<C64> = a.iter().zip(&self.spec[3]).map(|(a, k)| a * k).collect();
         (self.back(sx), self.back(sy))
-    }
-}
-
-/// In-place 2D complex FFT of an `mx` × `my` row-major array (rows, then columns).
-fn op_fft(row: &Arc<dyn Fft<f64>>, col: &Arc<dyn Fft<f64>>, mx: usize, my: usize, a: &mut [C64]) {
-    for r in a.chunks_exact_mut(mx) {
-        row.process(r);
-    }
-    let mut c = vec![C64::new(0.0, 0.0); my];
-    for i in 0..mx {
-        for j in 0..my {
-            c[j] = a[j * mx + i];
-        }
-        col.process(&mut c);
-        for j in 0..my {
-            a[j * mx + i] = c[j];
-        }
     }
 }

@@ -38,6 +38,26 @@ type C64 = Complex<f64>;
 /// transposes between the row and column passes then move whole cache lines.
 const BLOCK: usize = 16;
 
+/// In-place, unnormalised 2D complex FFT of an `nx` × `ny` row-major array (index
+/// `j * nx + i`): `row` (length `nx`) along every row, then `col` (length `ny`) along every
+/// column; forward or inverse as the plans are. The plain serial transform of the operators
+/// that are planned once and applied rarely (the cross terms, roughness synthesis).
+pub fn complex_fft2(row: &dyn Fft<f64>, col: &dyn Fft<f64>, nx: usize, ny: usize, a: &mut [C64]) {
+    for r in a.chunks_exact_mut(nx) {
+        row.process(r);
+    }
+    let mut c = vec![C64::new(0.0, 0.0); ny];
+    for i in 0..nx {
+        for j in 0..ny {
+            c[j] = a[j * nx + i];
+        }
+        col.process(&mut c);
+        for j in 0..ny {
+            a[j * nx + i] = c[j];
+        }
+    }
+}
+
 /// Smallest even 5-smooth integer $\ge n$ (fast FFT sizes for rustfft/realfft).
 pub fn fast_size(n: usize) -> usize {
     let mut m = n.max(2);
