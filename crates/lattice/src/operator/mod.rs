@@ -138,31 +138,11 @@ impl TensorConvolution {
     /// not on the lattice of spacing $(h_x, h_y)$ through the lowest centre, or two elements
     /// share a lattice cell.
     pub fn new(grid: &ContactGrid, c: &Compliance, model: InfluenceModel) -> Result<Self> {
-        let n = grid.len();
         let (nx, ny, _, _, cell) = grid.lattice_cells()?;
         let mx = fast_size(2 * nx - 1);
         let my = fast_size(2 * ny - 1);
         let mxh = mx / 2 + 1;
-        let (row_items, row_ptr) = rows_of(&cell, nx, ny);
-        let mut op = Self {
-            n,
-            nx,
-            ny,
-            mx,
-            my,
-            mxh,
-            cell,
-            row_items,
-            row_ptr,
-            kxx: Vec::new(),
-            kxy: Vec::new(),
-            kyy: Vec::new(),
-            self_term: [0.0; 3],
-            r2c: plans::r2c(mx),
-            c2r: plans::c2r(mx),
-            col_fwd: plans::forward(my),
-            col_inv: plans::inverse(my),
-        };
+        let mut op = Self::on_cells(nx, ny, mx, my, cell);
 
         // Kernel tensors for offsets (di, dj) >= 0, from a two-element probe grid
         // (field at the offset, source at the origin), times the element area.
