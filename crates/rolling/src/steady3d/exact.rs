@@ -162,25 +162,11 @@ impl SteadyRolling {
         if grid.is_empty() {
             return Err(Error::EmptyGrid { reason: "no contact element to roll on" });
         }
-        let n = grid.len();
         let (hx, hy) = (grid.hx, grid.hy);
         let rows = Rows::of(grid)?;
         // The lattice extended by each row's cell ahead of its leading element: displaced,
         // never loaded.
-        let mut ext = grid.clone();
-        let mut up = Vec::with_capacity(n);
-        for k in 0..n {
-            up.push(match rows.up[k] {
-                Some(u) => u,
-                None => {
-                    ext.x.push(rows.x0 + (rows.cell[k].0 + 1) as f64 * hx);
-                    ext.y.push(grid.y[k]);
-                    ext.pressure.push(0.0);
-                    ext.patch.push(0);
-                    ext.len() - 1
-                }
-            });
-        }
+        let (ext, up) = rows.extended(grid);
         let c = Compliance::pair(&bodies[0], &bodies[1]);
         let conv = TensorConvolution::new(&ext, &c, InfluenceModel::ExactRectangle)?;
         // Own stiffness: K(0) - K(h_x, 0) per unit traction, over h_x (K_xy vanishes on the axis).

@@ -163,6 +163,29 @@ impl Rows {
         order.sort_by_key(|&k| std::cmp::Reverse(cell[k].0));
         Ok(Self { cell, up, order, x0 })
     }
+
+    /// `grid` extended by the cell just ahead of each row's leading element (displaced by the
+    /// rolling, never loaded; zero pressure), and for every contact element the index of its
+    /// neighbour towards the leading edge in the extended grid.
+    pub(crate) fn extended(
+        &self,
+        grid: &stickslip_lattice::ContactGrid,
+    ) -> (stickslip_lattice::ContactGrid, Vec<usize>) {
+        let mut ext = grid.clone();
+        let up = (0..grid.len())
+            .map(|k| match self.up[k] {
+                Some(u) => u,
+                None => {
+                    ext.x.push(self.x0 + (self.cell[k].0 + 1) as f64 * grid.hx);
+                    ext.y.push(grid.y[k]);
+                    ext.pressure.push(0.0);
+                    ext.patch.push(0);
+                    ext.len() - 1
+                }
+            })
+            .collect();
+        (ext, up)
+    }
 }
 
 impl RollingSolution {

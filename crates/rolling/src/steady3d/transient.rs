@@ -111,20 +111,7 @@ impl TransientRolling {
         }
         let n = grid.len();
         let rows = Rows::of(grid)?;
-        let mut ext = grid.clone();
-        let mut up = Vec::with_capacity(n);
-        for k in 0..n {
-            up.push(match rows.up[k] {
-                Some(u) => u,
-                None => {
-                    ext.x.push(rows.x0 + (rows.cell[k].0 + 1) as f64 * grid.hx);
-                    ext.y.push(grid.y[k]);
-                    ext.pressure.push(0.0);
-                    ext.patch.push(0);
-                    ext.len() - 1
-                }
-            });
-        }
+        let (ext, mut up) = rows.extended(grid);
         up.extend(n..ext.len());
         let c = Compliance::pair(&bodies[0], &bodies[1]);
         let op = TensorConvolution::new(&ext, &c, InfluenceModel::ExactRectangle)?;
