@@ -83,10 +83,13 @@
 //! verification: `docs/load-histories.md`.
 
 mod path;
+mod problem;
+mod solves;
 mod stepper;
 
 pub use path::{find_loops, HistoryLoop, LoadPath, PathControl, PathPoint};
-pub use stepper::{
-    HistoryDirections, HistoryOutcome, HistoryProblem, HistoryStep, LoadHistory, StepTarget,
+pub use problem::{
+    HistoryDirections, HistoryOutcome, HistoryProblem, HistoryStep, StepTarget,
     SLIP_RANGE_DIRECTIONS,
 };
+pub use stepper::LoadHistory;
