@@ -110,7 +110,7 @@ pub struct HistoryStep {
 pub struct HistoryOutcome {
     /// One record per step of the path.
     pub steps: Vec<HistoryStep>,
-    /// The closed loops ([`find_loops`]).
+    /// The closed loops ([`find_loops`](super::find_loops)).
     pub loops: Vec<HistoryLoop>,
     /// Final traction per cell (Pa).
     pub traction: Vec<(f64, f64)>,
