@@ -4,6 +4,9 @@
 //! the key, and what is allowed. (Output directories that cannot be written:
 //! `stickslip-report`'s `tests/unwritable.rs`.)
 
+mod common;
+
+use common::SEED002_SPHERE as SPHERE;
 use stickslip_run::read_scene;
 use stickslip_scene::{ErrorKind, SceneError};
 
@@ -18,20 +21,6 @@ nu = 0.3
 [load]
 half_width = 0.0178
 friction = 0.5
-"#;
-
-const SPHERE: &str = r#"[geometry]
-kind = "sphere"
-radius = "1 in"
-[substrate]
-model = "homogeneous"
-e = "30e6 psi"
-nu = 0.3
-[indenter]
-model = "same"
-[load]
-normal = "2160 lbf"
-friction = 0.1
 "#;
 
 fn parse(s: &str) -> SceneError {

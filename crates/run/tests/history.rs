@@ -35,24 +35,8 @@ const PSI: f64 = 6894.757293168361;
 /// `history` (the `[load.history]` table's body), 64 cells across.
 fn sphere(history: &str) -> String {
     format!(
-        r#"title = "history test"
-[geometry]
-kind = "sphere"
-radius = "1 in"
-[substrate]
-model = "homogeneous"
-e = "30e6 psi"
-nu = 0.3
-[indenter]
-model = "same"
-[load]
-normal = "2160 lbf"
-friction = 0.1
-[load.history]
-{history}
-[solver]
-grid = 64
-"#
+        "title = \"history test\"\n{}[load.history]\n{history}\n[solver]\ngrid = 64\n",
+        common::SEED002_SPHERE
     )
 }
 

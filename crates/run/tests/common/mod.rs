@@ -61,3 +61,19 @@ pub fn scenes_dir() -> PathBuf {
 pub const INCH: f64 = 0.0254;
 pub const LBF: f64 = 4.4482216152605;
 pub const PSI: f64 = 6894.757293168361;
+
+/// Seed 002 Example 1's sphere (steel on steel, R = 1 in, P = 2160 lbf, f = 0.1), its
+/// `[load]` table left open for more keys.
+pub const SEED002_SPHERE: &str = r#"[geometry]
+kind = "sphere"
+radius = "1 in"
+[substrate]
+model = "homogeneous"
+e = "30e6 psi"
+nu = 0.3
+[indenter]
+model = "same"
+[load]
+normal = "2160 lbf"
+friction = 0.1
+"#;
