@@ -301,6 +301,32 @@ pub(crate) struct RawHistory {
     /// Linear sub-steps between two corners, 1 to 10000 (default 10).
     #[schemars(with = "Option<i64>")]
     pub steps: Option<Spanned<i64>>,
+    /// Instead of the lists: a table of corners (text, comma-separated, relative to the scene file), one row per corner, a header naming the columns tangential or shift, normal, moment, each with its unit ("tangential [N]", or "tangential_N" as in a run's history.csv) unless `units` gives it.
+    #[schemars(with = "Option<String>")]
+    pub file: Option<Spanned<String>>,
+    /// With `file`: the columns to read (others are ignored), e.g. ["tangential", "normal"] to read a run's history.csv; default every column, each of which must be one of tangential, shift, normal, moment.
+    #[schemars(with = "Option<Vec<String>>")]
+    pub columns: Option<Spanned<Vec<Spanned<String>>>>,
+    /// With `file`: the unit of each column whose header gives none, e.g. { tangential = "kN", shift = "um" }.
+    #[schemars(with = "Option<RawHistoryUnits>")]
+    pub units: Option<Spanned<RawHistoryUnits>>,
+}
+
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawHistoryUnits {
+    /// Unit of the tangential column (a force, e.g. "N", "kN", "lbf").
+    #[schemars(with = "Option<String>")]
+    pub tangential: Option<Spanned<String>>,
+    /// Unit of the shift column (a length, e.g. "um").
+    #[schemars(with = "Option<String>")]
+    pub shift: Option<Spanned<String>>,
+    /// Unit of the normal column (a force).
+    #[schemars(with = "Option<String>")]
+    pub normal: Option<Spanned<String>>,
+    /// Unit of the moment column (force x length, e.g. "N m").
+    #[schemars(with = "Option<String>")]
+    pub moment: Option<Spanned<String>>,
 }
 
 #[derive(Debug, Deserialize, JsonSchema)]

@@ -473,7 +473,10 @@ fn history_err(h: &HistoryRecipe, e: TractionError) -> SceneError {
     match e {
         E::PathCorner { corner, .. } => SceneError::new(
             ErrorKind::Impossible,
-            format!("the load path cannot be solved at corner {corner}: {e}"),
+            format!(
+                "the load path cannot be solved at corner {corner}{}: {e}",
+                stickslip_scene::PathSource::origin(h.source.as_ref(), corner)
+            ),
         )
         .key(format!("load.history.{list}[{corner}]"))
         .hint("keep the load within what friction carries at every corner (a force and a moment together are carried only below gross slip), or prescribe the shift"),

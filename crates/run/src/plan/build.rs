@@ -617,6 +617,7 @@ fn history_recipe(
         normal: (0..h.tangential.len()).map(|i| h.normal_at(i, constant)).collect(),
         moment: h.moment.clone(),
         steps: h.steps,
+        source: h.source.clone(),
         tolerance: tolerance_for(scene, "the fast solver", FastConfig::TOLERANCE_RANGE)?,
     })
 }

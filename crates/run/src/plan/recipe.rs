@@ -448,6 +448,8 @@ pub struct HistoryRecipe {
     pub moment: Option<Vec<f64>>,
     /// Sub-steps between corners.
     pub steps: usize,
+    /// The table the corners were read from, if a file gave them (for messages).
+    pub source: Option<stickslip_scene::PathSource>,
     /// Relative tolerance of every step's fast solve.
     pub tolerance: f64,
 }

@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 
 mod builder;
 mod heights;
+mod path_file;
 pub(crate) mod read;
 pub(crate) mod validate;
 
@@ -382,6 +383,27 @@ pub struct History {
     pub moment: Option<Vec<f64>>,
     /// Sub-steps between two corners (default 10).
     pub steps: usize,
+    /// Where the corners were read from, when `file` gave them (for messages).
+    pub source: Option<PathSource>,
+}
+
+/// The table a load path's corners were read from (`[load.history] file`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PathSource {
+    /// The file as opened.
+    pub file: std::path::PathBuf,
+    /// The 1-based line of each corner's row.
+    pub lines: Vec<usize>,
+}
+
+impl PathSource {
+    /// `" (path.csv:7)"` for corner `i` of a path read from a file, empty otherwise.
+    #[must_use]
+    pub fn origin(source: Option<&Self>, i: usize) -> String {
+        source
+            .and_then(|s| s.lines.get(i).map(|l| format!(" ({}:{l})", s.file.display())))
+            .unwrap_or_default()
+    }
 }
 
 /// What a load path prescribes along `load.direction_deg`.
@@ -401,6 +423,13 @@ impl History {
     pub const MAX_STEPS: usize = 10_000;
     /// The largest number of corners.
     pub const MAX_CORNERS: usize = 10_000;
+
+    /// Where corner `i` was written: `" (path.csv:7)"` when the corners came from a file,
+    /// empty otherwise (for messages that already name the corner's key).
+    #[must_use]
+    pub fn corner_origin(&self, i: usize) -> String {
+        PathSource::origin(self.source.as_ref(), i)
+    }
 
     /// The normal load at corner `i`: the path's, or `constant` (`load.normal`).
     #[must_use]

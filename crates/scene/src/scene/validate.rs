@@ -518,7 +518,10 @@ fn history(scene: &Scene) -> Result<(), Issue> {
             return Err(Issue::new(
                 ErrorKind::Impossible,
                 &key("normal", i),
-                format!("the normal load reaches {p} N at corner {i}: the bodies separate"),
+                format!(
+                    "the normal load reaches {p} N at corner {i}{}: the bodies separate",
+                    h.corner_origin(i)
+                ),
             )
             .hint("keep the normal load > 0 at every corner (a path that separates the bodies is not solved)"));
         }
@@ -539,7 +542,8 @@ fn history(scene: &Scene) -> Result<(), Issue> {
                     ErrorKind::Impossible,
                     &key(list, i),
                     format!(
-                        "at corner {i} the tangential {what} |T| = {} N exceeds f P = {cap} N: no equilibrium, the bodies slide",
+                        "at corner {i}{} the tangential {what} |T| = {} N exceeds f P = {cap} N: no equilibrium, the bodies slide",
+                        h.corner_origin(i),
                         t.abs()
                     ),
                 )

@@ -36,6 +36,8 @@ enum Kind {
     QtyOrArray(&'static str, &'static str),
     /// An array of numbers; an example for the hint.
     NumArray(&'static str),
+    /// An array of strings; an example for the hint.
+    StrArray(&'static str),
     /// A table.
     Table(&'static Table),
     /// An array of tables.
@@ -162,6 +164,18 @@ static HISTORY: Table = Table {
         f("normal", Kind::QtyArray("[\"100 N\", \"100 N\", \"80 N\", \"100 N\"]")),
         f("moment", Kind::QtyArray("[\"0 N m\", \"0.1 N m\", \"-0.1 N m\"]")),
         f("steps", Kind::Int),
+        f("file", Kind::Str(&[])),
+        f("columns", Kind::StrArray("[\"tangential\", \"normal\"]")),
+        f("units", Kind::Table(&HISTORY_UNITS)),
+    ],
+};
+
+static HISTORY_UNITS: Table = Table {
+    fields: &[
+        f("tangential", Kind::Str(&[])),
+        f("shift", Kind::Str(&[])),
+        f("normal", Kind::Str(&[])),
+        f("moment", Kind::Str(&[])),
     ],
 };
 
@@ -456,6 +470,28 @@ fn check(v: &Spanned<DeValue<'_>>, kind: Kind, key: &str, out: &mut Vec<Problem>
                 format!("{name} = {example}"),
             )),
         },
+        Kind::StrArray(example) => match val {
+            DeValue::Array(a) => {
+                for (i, e) in a.iter().enumerate() {
+                    if !matches!(e.get_ref(), DeValue::String(_)) {
+                        out.push(problem(
+                            key,
+                            e.span(),
+                            format!(
+                                "value {} of the array: expected a string, found {}",
+                                i + 1,
+                                found(e.get_ref())
+                            ),
+                            format!("{name} = {example}"),
+                        ));
+                    }
+                }
+            }
+            _ => out.push(wrong(
+                &format!("an array of strings such as {example}"),
+                format!("{name} = {example}"),
+            )),
+        },
         // Resolved to Qty or QtyArray above.
         Kind::QtyOrArray(..) => {}
         Kind::Table(t) => match val {
@@ -598,7 +634,9 @@ fn walk(
                     }
                     Kind::Num => format!("add {} = a number", field.name),
                     Kind::Qty(e) | Kind::QtyOrArray(e, _) => format!("add {} = {e}", field.name),
-                    Kind::QtyArray(e) | Kind::NumArray(e) => format!("add {} = {e}", field.name),
+                    Kind::QtyArray(e) | Kind::NumArray(e) | Kind::StrArray(e) => {
+                        format!("add {} = {e}", field.name)
+                    }
                     _ => format!("add `{}`; see docs/SCENES.md", field.name),
                 };
                 problem(
