@@ -3,6 +3,9 @@
 //! step a corner) reproduces the run it came from; and every flaw of the table is refused
 //! with the file, line and column.
 
+// SceneError carries file, position, key and hint; tests return it as is.
+#![allow(clippy::result_large_err)]
+
 mod common;
 
 use std::path::{Path, PathBuf};
