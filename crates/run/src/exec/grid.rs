@@ -45,13 +45,8 @@ pub(crate) fn solve(
         .map_err(|e| grid_err(method, e))?
         .with_tolerance(tolerance);
     // A periodic surface: the tangential operator has the same period as the normal one.
-    if let ContactNormal::Surface { surface, .. } = &r.normal {
-        if surface.boundary == SurfaceBoundary::Periodic {
-            let [nx, ny] = surface.cells;
-            let (hx, hy) = (surface.size[0] / nx as f64, surface.size[1] / ny as f64);
-            let origin = (-0.5 * surface.size[0] + 0.5 * hx, -0.5 * surface.size[1] + 0.5 * hy);
-            problem = problem.with_periodic(PeriodicLattice { cells: (nx, ny), origin });
-        }
+    if let Some(lattice) = periodic_lattice(r) {
+        problem = problem.with_periodic(lattice);
     }
     let (stage, solver): (&'static str, Box<dyn GridSolver>) = match method {
         GridMethod::Lp => ("modified LP", Box::new(ModifiedLp::default())),
@@ -182,5 +177,19 @@ fn grid_err(method: GridMethod, e: TractionError) -> SceneError {
         .key("solver.grid")
         .hint("the modified LP finds no complementary solution on lattices this coarse (seen at 5 elements across under a moment); raise solver.grid, or use method = \"fast\""),
         _ => solver_err(name, e),
+    }
+}
+
+/// The period of a periodic surface as the tangential solvers take it (every cell of the
+/// surface's lattice, the first cell's centre as origin); `None` for any other contact.
+pub(crate) fn periodic_lattice(r: &ContactRecipe) -> Option<PeriodicLattice> {
+    match &r.normal {
+        ContactNormal::Surface { surface, .. } if surface.boundary == SurfaceBoundary::Periodic => {
+            let [nx, ny] = surface.cells;
+            let (hx, hy) = (surface.size[0] / nx as f64, surface.size[1] / ny as f64);
+            let origin = (-0.5 * surface.size[0] + 0.5 * hx, -0.5 * surface.size[1] + 0.5 * hy);
+            Some(PeriodicLattice { cells: (nx, ny), origin })
+        }
+        _ => None,
     }
 }

@@ -26,7 +26,7 @@ use super::normal::{surface_err, surface_gap, surface_solution, ContactSolution}
 use super::outcome::{GridZones, HistoryLoopOut, HistoryOut, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, HistoryRecipe};
-use stickslip_scene::{ErrorKind, HistoryControl, SceneError};
+use stickslip_scene::{ErrorKind, HistoryControl, SceneError, SurfaceBoundary};
 
 /// Errors of the pressure model and of the history, kept apart until they are located.
 enum Fail {
@@ -152,16 +152,13 @@ fn setup<'a>(
             let (hx, hy) = (surface.size[0] / nx as f64, surface.size[1] / ny as f64);
             let (x0, y0) = (-0.5 * surface.size[0], -0.5 * surface.size[1]);
             let tol = Tolerance::relative(*tolerance).map_err(|e| solver_err("tolerance", e))?;
-            let problem = NormalProblem::new(
-                nx,
-                ny,
-                (hx, hy),
-                gap,
-                r.bodies.pair(),
-                stickslip_normal::Boundary::Free,
-            )
-            .map_err(surface_err)?
-            .with_tolerance(tol);
+            let boundary = match surface.boundary {
+                SurfaceBoundary::Free => stickslip_normal::Boundary::Free,
+                SurfaceBoundary::Periodic => stickslip_normal::Boundary::Periodic,
+            };
+            let problem = NormalProblem::new(nx, ny, (hx, hy), gap, r.bodies.pair(), boundary)
+                .map_err(surface_err)?
+                .with_tolerance(tol);
             let op = problem.operator();
             let grid = ContactGrid::from_mask(
                 hx,
@@ -240,10 +237,15 @@ pub(crate) fn run(
         FastConfig::default().max_iterations(),
     )
     .map_err(|e| solver_err("fast solver configuration", e))?;
-    let problem = HistoryProblem::new(&st.grid, r.bodies.pair(), r.friction)
+    let mut problem = HistoryProblem::new(&st.grid, r.bodies.pair(), r.friction)
         .and_then(|p| p.with_angle(h.direction))
         .map_err(|e| history_err(h, e))?
         .with_config(config);
+    // A periodic surface: the tangential operator has the period of the normal one (the
+    // history's grid is every cell of the period).
+    if let Some(lattice) = super::grid::periodic_lattice(r) {
+        problem = problem.with_periodic(lattice);
+    }
     let total = path.points().len();
     cx.progress("load path", 0, total);
     let out =

@@ -597,11 +597,11 @@ fn history_recipe(
         ));
     }
     if let ContactNormal::Surface { surface, .. } = normal {
-        if surface.boundary == SurfaceBoundary::Periodic {
+        if surface.boundary == SurfaceBoundary::Periodic && h.moment.is_some() {
             return Err(unsupported(
-                "load.history",
-                "a load path on a periodic surface is not solved in this version",
-                "use geometry.boundary = \"free\"",
+                "load.history.moment",
+                "a moment on a periodic surface is not solved (a rotation is not periodic)",
+                "remove load.history.moment, or use geometry.boundary = \"free\"",
             ));
         }
     }

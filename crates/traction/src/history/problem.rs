@@ -8,7 +8,7 @@ use crate::fast::FastConfig;
 use crate::solve::{ElementState, Regime};
 use stickslip_halfspace::Material;
 use stickslip_lattice::influence::InfluenceModel;
-use stickslip_lattice::ContactGrid;
+use stickslip_lattice::{ContactGrid, PeriodicLattice};
 
 /// Number of directions along which the slip range is tracked (see the module docs).
 pub const SLIP_RANGE_DIRECTIONS: usize = 8;
@@ -48,6 +48,7 @@ pub struct HistoryProblem<'a> {
     pub(super) centre: Option<(f64, f64)>,
     pub(super) model: InfluenceModel,
     pub(super) config: FastConfig,
+    pub(super) periodic: Option<PeriodicLattice>,
 }
 
 /// One solved step: the loads, the rigid motion, the stick fraction and the energies.
@@ -145,6 +146,7 @@ impl<'a> HistoryProblem<'a> {
             centre: None,
             model: InfluenceModel::default(),
             config: FastConfig::default(),
+            periodic: None,
         })
     }
 
@@ -196,7 +198,18 @@ impl<'a> HistoryProblem<'a> {
         self
     }
 
-    /// The influence model.
+    /// Solve on a periodic surface: the grid's cells are cells of `lattice` (one period),
+    /// the operator is the periodic one ([`stickslip_lattice::TensorConvolution::periodic`]: Cerruti's Fourier
+    /// transfer, mean displacement zero), as for one state on a periodic surface
+    /// ([`crate::fast::FastProblem::with_periodic`]). The shift is then relative to the mean
+    /// surface displacement; a moment is refused (a rotation is not periodic).
+    #[must_use]
+    pub fn with_periodic(mut self, lattice: PeriodicLattice) -> Self {
+        self.periodic = Some(lattice);
+        self
+    }
+
+    /// The influence model (an isolated contact; a periodic one has its own transfer).
     #[must_use]
     pub fn with_model(mut self, model: InfluenceModel) -> Self {
         self.model = model;
@@ -317,6 +330,13 @@ impl HistoryProblem<'_> {
     }
 
     pub(super) fn check_moment_allowed(&self, control: PathControl, m: f64) -> Result<()> {
+        if self.periodic.is_some() {
+            return Err(Error::OutOfDomain {
+                name: "moment on a periodic surface",
+                value: m,
+                allowed: "none: a rotation is not periodic",
+            });
+        }
         if control == PathControl::Shift {
             return Err(Error::OutOfDomain {
                 name: "moment on a shift-controlled path",

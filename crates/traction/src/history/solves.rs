@@ -49,6 +49,9 @@ impl Ctx<'_> {
         let mut fp = FastProblem::new(self.grid, self.p.bodies, self.p.friction, load)?
             .with_model(self.p.model)
             .with_config(self.p.config);
+        if let Some(lattice) = self.p.periodic {
+            fp = fp.with_periodic(lattice)?;
+        }
         if let Some(d) = self.fixed {
             fp = fp.with_directions(TractionDirections::Fixed(d.clone()))?;
         }

@@ -18,13 +18,13 @@ impl<'a> HistoryProblem<'a> {
     /// traction-free state.
     ///
     /// # Errors
-    /// As [`TensorConvolution::new`].
+    /// As [`TensorConvolution::new`] (or [`TensorConvolution::periodic`]).
     pub fn start(&self) -> Result<LoadHistory<'a>> {
-        let op = TensorConvolution::new(
-            self.grid,
-            &stickslip_lattice::Compliance::pair(&self.bodies[0], &self.bodies[1]),
-            self.model,
-        )?;
+        let c = stickslip_lattice::Compliance::pair(&self.bodies[0], &self.bodies[1]);
+        let op = match &self.periodic {
+            Some(lattice) => TensorConvolution::periodic(self.grid, &c, lattice)?,
+            None => TensorConvolution::new(self.grid, &c, self.model)?,
+        };
         let scratch = op.make_scratch();
         let n = self.grid.len();
         let e = (self.angle.cos(), self.angle.sin());
