@@ -29,7 +29,8 @@ pub fn scenes_page(dir: &Path, link_prefix: &str) -> Result<String, SceneError> 
     let mut rows = Vec::new();
     for name in &names {
         let text = std::fs::read_to_string(dir.join(name)).map_err(io)?;
-        let scene = Scene::from_toml_str(&text, Some(name.into()))?;
+        // The scene's own path, so that files it names (roughness, a load path) resolve.
+        let scene = Scene::from_toml_str(&text, Some(dir.join(name)))?;
         let plan = Plan::new(&scene)?;
         rows.push((name.clone(), scene, plan));
     }

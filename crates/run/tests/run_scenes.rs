@@ -326,6 +326,32 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             }
             assert!(out.audit.passed);
         }
+        "rough_periodic_fretting.toml" => {
+            // No closed form for a rough sphere; what every path must meet: the two loops
+            // of the file's path, each over the full force range of 1 N; the dissipation map
+            // summing to the path's dissipation; each loop dissipating less than the work
+            // of sliding over its shift range at the largest normal load, 2 f P delta; the
+            // final normal load; Coulomb's law.
+            let h = out.history.as_ref().unwrap();
+            assert_eq!(h.loops.len(), 2, "{:?}", h.loops);
+            for l in &h.loops {
+                expect("loop force range", l.force_range, 1.0, 1e-9);
+                assert!(l.energy > 0.0 && l.energy < 2.0 * 0.2 * 5.0 * l.shift_range, "{l:?}");
+            }
+            let SurfaceOut::Grid { x, y, dissipation: Some(d), .. } = &out.surface else {
+                panic!("no dissipation map")
+            };
+            let total = d.iter().flatten().sum::<f64>() * (x[1] - x[0]) * (y[1] - y[0]);
+            expect(
+                "dissipation map against the path's",
+                total,
+                *h.dissipated.last().unwrap(),
+                1e-9,
+            );
+            expect("final normal load", out.forces.normal, 5.0, 1e-6);
+            assert!(cone_violation(out, 0.2) < tol::CONE);
+            assert!(out.audit.passed);
+        }
         "two_patch_joint_twist.toml" => {
             let (_, _, mz, _) = grid_resultant(out);
             expect("moment of the element tractions", mz, 40.0, 1e-6);
