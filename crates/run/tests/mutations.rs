@@ -23,10 +23,8 @@ fn scenes() -> Vec<(String, String)> {
         .map(|e| e.path())
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .map(|p| {
-            (
-                p.file_name().unwrap().to_string_lossy().into_owned(),
-                std::fs::read_to_string(&p).unwrap(),
-            )
+            // The whole path, so that files a scene names (a load path, heights) resolve.
+            (p.to_string_lossy().into_owned(), std::fs::read_to_string(&p).unwrap())
         })
         .collect();
     v.sort();

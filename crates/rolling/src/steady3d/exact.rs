@@ -50,9 +50,21 @@ pub struct SteadyRolling {
     /// Own slip stiffness per unit traction, x and y.
     d: [f64; 2],
     friction: f64,
+    /// The two bodies (for the coarser lattices of the nested start).
+    bodies: [Material; 2],
     tolerance: f64,
     max_iterations: usize,
+    /// Start from the coarser lattices' solution where the lattice is large enough.
+    nested: bool,
 }
+
+/// A grid at least twice this many cells across in both directions starts from the
+/// solution on its lattice coarsened 2 x 2 ([`SteadyRolling::solve`]).
+pub const NEST_MIN_CELLS: usize = 16;
+
+/// The coarse levels' tolerance: a start, not a result, so its active set need only be
+/// settled (the fine level iterates on to its own tolerance).
+const COARSE_TOLERANCE: f64 = 1e-4;
 
 /// Relative tolerances accepted by [`SteadyRolling::with_tolerance`].
 pub const TOLERANCE_RANGE: (f64, f64) = (1e-10, 1e-1);
@@ -183,8 +195,10 @@ impl SteadyRolling {
             conv,
             d: [dxx / hx, dyy / hx],
             friction,
+            bodies,
             tolerance: 1e-6,
             max_iterations: 100,
+            nested: true,
         })
     }
 
@@ -208,6 +222,14 @@ impl SteadyRolling {
     #[must_use]
     pub fn with_max_iterations(mut self, max_iterations: usize) -> Self {
         self.max_iterations = max_iterations.max(1);
+        self
+    }
+
+    /// Solve from the no-slip state on this lattice alone, without the nested start of
+    /// [`SteadyRolling::solve`] (for comparisons; the nested start is the default).
+    #[must_use]
+    pub fn without_nesting(mut self) -> Self {
+        self.nested = false;
         self
     }
 
@@ -398,19 +420,68 @@ impl SteadyRolling {
     /// $\lVert\Phi\rVert_2$. A creepage large enough that every element slides is a result
     /// (no stick element, $|\mathbf F| \to fP$), not an error.
     ///
+    /// On a lattice at least $2\times$[`NEST_MIN_CELLS`] cells across in both directions the
+    /// iteration starts from the solution of the same creepages on the lattice coarsened
+    /// 2 x 2 (itself solved the same way, to a looser tolerance), each element taking its
+    /// coarse element's traction: the slip area is then nearly right, and the fine lattice
+    /// needs a few Newton steps instead of growing the slip area from the no-slip state.
+    /// If that start does not converge, the fine lattice is solved again from the no-slip
+    /// state, so the nesting never turns a solvable problem into a failure. The products of
+    /// every level are counted in [`RollingInfo::products`] (a coarse one costs about a
+    /// quarter of a fine one).
+    ///
     /// # Errors
     /// [`Error::NotConverged`] if the residual has not met the tolerance within the iteration
     /// budget (the residual reached is given); as [`Creepage`] validation.
     pub fn solve(&self, creep: &Creepage) -> Result<RollingSolution> {
         creep.validate()?;
-        let n = self.contact.len();
         let g: Vec<f64> =
             self.contact.pressure.iter().map(|p| self.friction * p.max(0.0)).collect();
         let gmax = g.iter().copied().fold(0.0, f64::max);
+        if gmax > 0.0 {
+            if let Some((start, coarse_products)) = self.coarse_start(creep) {
+                if let Ok(mut s) = self.newton(creep, &g, Some(start)) {
+                    s.info.products += coarse_products;
+                    return Ok(s);
+                }
+            }
+        }
+        self.newton(creep, &g, None)
+    }
+
+    /// The nested start of [`SteadyRolling::solve`]: the coarse lattice's tractions carried
+    /// to this one, and the products spent on the coarse levels; `None` when the lattice is
+    /// too small or the coarse problem fails.
+    fn coarse_start(&self, creep: &Creepage) -> Option<([Vec<f64>; 2], usize)> {
+        if !self.nested {
+            return None;
+        }
+        let (coarse, parent) = self.contact.coarsened(NEST_MIN_CELLS)?;
+        let problem = SteadyRolling::new(&coarse, self.bodies, self.friction)
+            .ok()?
+            .with_tolerance(self.tolerance.max(COARSE_TOLERANCE))
+            .ok()?
+            .with_max_iterations(self.max_iterations);
+        let s = problem.solve(creep).ok()?;
+        let qx = parent.iter().map(|&c| s.qx[c]).collect();
+        let qy = parent.iter().map(|&c| s.qy[c]).collect();
+        Some(([qx, qy], s.info.products))
+    }
+
+    /// Semismooth Newton from `start` (tractions per element, projected on the bound
+    /// here), or from the no-slip state projected on the bound.
+    fn newton(
+        &self,
+        creep: &Creepage,
+        g: &[f64],
+        start: Option<[Vec<f64>; 2]>,
+    ) -> Result<RollingSolution> {
+        let n = self.contact.len();
+        let gmax = g.iter().copied().fold(0.0, f64::max);
         let mut w = self.work();
-        let (mut qx, mut qy) = (vec![0.0; n], vec![0.0; n]);
         let (mut sx, mut sy) = (vec![0.0; n], vec![0.0; n]);
         if gmax == 0.0 {
+            let (qx, qy) = (vec![0.0; n], vec![0.0; n]);
             self.slip(&mut w, creep, [&qx, &qy], [&mut sx, &mut sy]);
             let info = RollingInfo {
                 method: RollingMethod::Exact,
@@ -423,11 +494,19 @@ impl SteadyRolling {
         let mut products = 0;
         let mut state = Newton::new(n);
         let mut residual;
-        // Start from the no-slip state projected on the bound: close to the answer at small
-        // creepage, and the slip area grows from the trailing edge as in the true solution.
-        let all: Vec<usize> = (0..n).collect();
-        let (p, _) = self.solve_stick(&mut w, creep, &all, [&mut qx, &mut qy], 1e-3);
-        products += p;
+        let (mut qx, mut qy) = match start {
+            Some([qx, qy]) => (qx, qy),
+            None => {
+                // The no-slip state projected on the bound: close to the answer at small
+                // creepage, and the slip area grows from the trailing edge as in the true
+                // solution.
+                let (mut qx, mut qy) = (vec![0.0; n], vec![0.0; n]);
+                let all: Vec<usize> = (0..n).collect();
+                let (p, _) = self.solve_stick(&mut w, creep, &all, [&mut qx, &mut qy], 1e-3);
+                products += p;
+                (qx, qy)
+            }
+        };
         for k in 0..n {
             let qn = qx[k].hypot(qy[k]);
             if qn > g[k] {
@@ -438,7 +517,7 @@ impl SteadyRolling {
         }
         self.slip(&mut w, creep, [&qx, &qy], [&mut sx, &mut sy]);
         products += 1;
-        let mut phi_norm = state.linearise(self.d_scalar(), &g, [&qx, &qy], [&sx, &sy]);
+        let mut phi_norm = state.linearise(self.d_scalar(), g, [&qx, &qy], [&sx, &sy]);
         residual = state.worst / gmax;
         for iteration in 1..=self.max_iterations {
             if residual <= self.tolerance {
@@ -465,7 +544,7 @@ impl SteadyRolling {
                 self.slip(&mut w, creep, [&qx, &qy], [&mut sx, &mut sy]);
                 products += 1;
                 let mut trial = Newton::new(n);
-                let norm = trial.linearise(self.d_scalar(), &g, [&qx, &qy], [&sx, &sy]);
+                let norm = trial.linearise(self.d_scalar(), g, [&qx, &qy], [&sx, &sy]);
                 if norm <= (1.0 - 1e-4 * alpha) * phi_norm {
                     state = trial;
                     phi_norm = norm;
@@ -477,7 +556,7 @@ impl SteadyRolling {
             if !accepted {
                 // Keep the smallest step: the residual is reported honestly either way.
                 let mut trial = Newton::new(n);
-                phi_norm = trial.linearise(self.d_scalar(), &g, [&qx, &qy], [&sx, &sy]);
+                phi_norm = trial.linearise(self.d_scalar(), g, [&qx, &qy], [&sx, &sy]);
                 state = trial;
             }
             residual = state.worst / gmax;

@@ -31,7 +31,7 @@ pub mod kalker;
 pub mod polach;
 mod transient;
 
-pub use exact::{SteadyRolling, TOLERANCE_RANGE};
+pub use exact::{SteadyRolling, NEST_MIN_CELLS, TOLERANCE_RANGE};
 pub use transient::{TransientRolling, TransientStep};
 
 /// The largest force error of [`fastsim`] against the exact theory, relative to $fN$, over
