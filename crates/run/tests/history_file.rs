@@ -1,7 +1,7 @@
 //! A load path read from a table (`[load.history] file = "path.csv"`): the same path as the
-//! lists gives the same history; a run's own `history.csv` read back as corners (every
-//! step a corner) reproduces the run it came from; and every flaw of the table is refused
-//! with the file, line and column.
+//! lists gives the same history, and every flaw of the table is refused with the file, line
+//! and column. (A run's own `history.csv` read back: `stickslip-report`'s
+//! `tests/history_csv.rs`.)
 
 // SceneError carries file, position, key and hint; tests return it as is.
 #![allow(clippy::result_large_err)]
@@ -72,61 +72,6 @@ fn a_table_is_the_same_path_as_the_lists() {
     assert_eq!(h.tangential, vec![0.0, 10.0 * 4.4482216152605]);
     assert_eq!(h.normal, Some(vec![9600.0, 9600.0]));
     assert_eq!(h.source.unwrap().lines, vec![2, 3]);
-}
-
-/// A run's `history.csv` (its columns as the report writes them) read back with
-/// `columns = ["tangential", "normal"]` and one step per row: each row is a corner, so the
-/// path is the one the run solved, and the shift follows it to the solver's tolerance.
-#[test]
-fn a_runs_history_csv_read_back_reproduces_the_run() {
-    let d = dir("roundtrip");
-    let first = solve(
-        &read(
-            &d,
-            &sphere("tangential = [\"0 lbf\", \"108 lbf\", \"-108 lbf\", \"108 lbf\"]\nsteps = 8"),
-            &[],
-        )
-        .unwrap(),
-    );
-    let h = first.history.unwrap();
-    let mut csv = String::from(
-        "step,corner,tangential_N,normal_N,moment_N_m,shift_m,rotation_rad,stick_fraction,dissipated_J,work_J,elastic_energy_J,gross_slip\n",
-    );
-    for i in 0..h.tangential.len() {
-        let corner =
-            h.corners.iter().position(|&c| c == i).map(|c| c.to_string()).unwrap_or_default();
-        csv += &format!(
-            "{i},{corner},{:e},{:e},{:e},{:e},{:e},{},{:e},{:e},{:e},{}\n",
-            h.tangential[i],
-            h.normal[i],
-            h.moment[i],
-            h.shift[i],
-            h.rotation[i],
-            h.stick_fraction[i],
-            h.dissipated[i],
-            h.work[i],
-            h.elastic_energy[i],
-            h.gross_slip[i]
-        );
-    }
-    let again = solve(
-        &read(
-            &d,
-            &sphere("file = \"history.csv\"\ncolumns = [\"tangential\", \"normal\"]\nsteps = 1"),
-            &[("history.csv", &csv)],
-        )
-        .unwrap(),
-    );
-    let g = again.history.unwrap();
-    // Every row a corner, one step between two: the same steps.
-    assert_eq!(g.tangential.len(), h.tangential.len());
-    assert_eq!(g.corners, (0..h.tangential.len()).collect::<Vec<_>>());
-    let range = h.shift.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let worst = h.shift.iter().zip(&g.shift).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
-    println!("shift: worst difference {worst:e} m of {range:e} m");
-    assert!(worst <= 1e-6 * range, "shift differs by {worst:e} m of {range:e} m");
-    let (ea, eb) = (h.dissipated.last().unwrap(), g.dissipated.last().unwrap());
-    assert!((ea - eb).abs() <= 1e-6 * ea, "dissipated {ea} against {eb}");
 }
 
 /// The refusal of a scene: from reading, validation or the run.
