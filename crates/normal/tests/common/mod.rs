@@ -1,7 +1,48 @@
-//! Reference solvers shared by the normal-contact tests: a dense LU and the exact
-//! active-set solve of the discrete problem, independent of the FFT solver.
+//! Reference solvers and surfaces shared by the normal-contact tests: a dense LU and the
+//! exact active-set solve of the discrete problem, independent of the FFT solver; the dense
+//! matrix of an operator (its columns); a band-limited rough periodic surface.
 
 #![allow(dead_code)]
+
+use stickslip_lattice::roughness::{Rms, SelfAffine};
+use stickslip_normal::NormalOperator;
+
+/// The dense row-major matrix of `op` (n x n, n its cells), column by column from its own
+/// products: checks the iteration, not the operator.
+pub fn dense_matrix(op: &NormalOperator) -> Vec<f64> {
+    let (nx, ny) = op.lattice();
+    let n = nx * ny;
+    let mut scratch = op.make_scratch();
+    let mut k = vec![0.0; n * n];
+    let (mut e_j, mut col) = (vec![0.0; n], vec![0.0; n]);
+    for j in 0..n {
+        e_j.fill(0.0);
+        e_j[j] = 1.0;
+        op.apply(&e_j, &mut col, &mut scratch);
+        for i in 0..n {
+            k[i * n + j] = col[i];
+        }
+    }
+    k
+}
+
+/// The initial gap of a band-limited self-affine periodic surface (Hurst 0.8, wavenumbers 2 to
+/// 32 over the period, rms height 1 um) on `n` x `n` cells of a square period `size` (m),
+/// measured from its highest point; and the cell side.
+pub fn rough_periodic_gap(n: usize, size: f64, seed: u64) -> (Vec<f64>, f64) {
+    let h = SelfAffine {
+        hurst: 0.8,
+        k_low: 2.0,
+        k_rolloff: 2.0,
+        k_high: 32.0,
+        rms: Rms::Height(1e-6),
+        seed,
+    }
+    .heights(n, n, [size, size])
+    .unwrap();
+    let top = h.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    (h.iter().map(|v| top - v).collect(), size / n as f64)
+}
 
 /// Dense LU with partial pivoting: solves a x = b in place (a row-major n x n).
 pub fn lu_solve(mut a: Vec<f64>, mut b: Vec<f64>) -> Vec<f64> {
