@@ -22,6 +22,9 @@ impl NormalProblem<'_> {
         force: Option<f64>,
         start: Start<'_>,
     ) -> Result<(NormalSolution, bool)> {
+        if let (Some(_), Some(pf)) = (self.hardness, force) {
+            return self.run_capped(op, pf, tol, start);
+        }
         let warm = !matches!(start, Start::Cold);
         let (nx, n) = (self.nx, self.nx * self.ny);
         let t0 = Instant::now();
@@ -40,6 +43,10 @@ impl NormalProblem<'_> {
             }
         }
 
+        // The hardness: cells at p = cap are plastic (infinite without a cap, where every
+        // test against it below is true or false throughout and changes nothing).
+        let cap = self.hardness.unwrap_or(f64::INFINITY);
+        let capped = cap.is_finite();
         let mut p = match (start, load) {
             (Start::Owned(mut w), _) => {
                 w.par_iter_mut().for_each(|p| *p = p.max(0.0));
@@ -58,6 +65,11 @@ impl NormalProblem<'_> {
                 p.fill(1.0);
                 rescale(&mut p, pf / area);
             }
+        }
+        if capped {
+            // Force control under a cap goes by the approach ([`NormalProblem::run_capped`]).
+            debug_assert!(force.is_none());
+            p.par_iter_mut().for_each(|p| *p = p.min(cap));
         }
 
         let spectral = self.preconditioner == Preconditioner::Spectral;
@@ -118,7 +130,7 @@ impl NormalProblem<'_> {
                         let mut a = GapSums::EMPTY;
                         for (g, (u, (g0, p))) in g.iter_mut().zip(u.iter().zip(g0.iter().zip(p))) {
                             *g = f * u + g0;
-                            a.add(*g, f * p);
+                            a.add(*g, f * p, *p >= cap);
                         }
                         a
                     }),
@@ -159,7 +171,7 @@ impl NormalProblem<'_> {
                     |j, row| {
                         let (p, g) = (&p[j * nx..(j + 1) * nx], &g[j * nx..(j + 1) * nx]);
                         for (v, (p, g)) in row.iter_mut().zip(p.iter().zip(g)) {
-                            *v = if *p > 0.0 { (g - delta) as f32 } else { 0.0 };
+                            *v = if *p > 0.0 && *p < cap { (g - delta) as f32 } else { 0.0 };
                         }
                     },
                     &mut r,
@@ -170,7 +182,7 @@ impl NormalProblem<'_> {
                             .zip(&gp[j * nx..(j + 1) * nx]);
                         let mut acc = [0.0; 4];
                         for (z, ((p, g), gp)) in z.iter_mut().zip(cells) {
-                            if *p > 0.0 {
+                            if *p > 0.0 && *p < cap {
                                 let gp = f64::from(*gp);
                                 acc = [
                                     acc[0] + *z,
@@ -195,7 +207,7 @@ impl NormalProblem<'_> {
                             for (z, (p, (g, gp))) in
                                 z.iter_mut().zip(p.iter().zip(g.iter().zip(gp)))
                             {
-                                if *p > 0.0 {
+                                if *p > 0.0 && *p < cap {
                                     let gp = f64::from(*gp);
                                     *z = g - delta;
                                     acc = [
@@ -234,13 +246,15 @@ impl NormalProblem<'_> {
                         for ((t, gp), (z, (g, p))) in
                             t.iter_mut().zip(gp.iter_mut()).zip(z.iter().zip(g.iter().zip(p)))
                         {
-                            if *p > 0.0 {
+                            if *p > 0.0 && *p < cap {
                                 let gd = g - delta;
                                 *t = (z - m) + beta * *t;
                                 *gp = gd as f32;
                                 acc = [acc[0] + *t, acc[1] + *t * *t, acc[2] + gd * *t, acc[3]];
                                 if *t > 0.0 {
                                     acc[3] = acc[3].min(f * p / *t);
+                                } else if *t < 0.0 && capped {
+                                    acc[3] = acc[3].min((f * p - cap) / *t);
                                 }
                             } else {
                                 *t = 0.0;
@@ -264,7 +278,7 @@ impl NormalProblem<'_> {
                         let cells = p[j * nx..(j + 1) * nx].iter().zip(&t[j * nx..(j + 1) * nx]);
                         let mut acc = [0.0; 2];
                         for (r, (p, t)) in r.iter().zip(cells) {
-                            if *p > 0.0 {
+                            if *p > 0.0 && *p < cap {
                                 acc = [acc[0] + r, acc[1] + r * t];
                             }
                         }
@@ -312,36 +326,48 @@ impl NormalProblem<'_> {
             // Step, projection, re-entry of penetrating cells, u -= tau K t, and the new force,
             // in one pass; `changes` the departures from p - tau t (clipped or re-entered
             // cells), whose columns correct u.
-            let blocks = in_order(
-                p.par_chunks_mut(BLOCK)
-                    .zip(u.par_chunks_mut(BLOCK))
-                    .zip(g.par_chunks(BLOCK).zip(t.par_chunks(BLOCK).zip(r.par_chunks(BLOCK))))
-                    .enumerate()
-                    .map(|(b, ((p, u), (g, (t, r))))| {
-                        let (mut ch, mut sum) = (Vec::new(), 0.0);
-                        let cells =
-                            p.iter_mut().zip(u.iter_mut().zip(g.iter().zip(t.iter().zip(r))));
-                        for (i, (p, (u, (g, (t, r))))) in cells.enumerate() {
-                            let k = b * BLOCK + i;
-                            *u = f * *u - tau * r;
-                            if *p > 0.0 {
-                                let free = f * *p - tau * t;
-                                *p = free.max(0.0);
-                                if free < 0.0 {
-                                    ch.push((k, -free));
+            let blocks = if capped {
+                in_order(
+                    p.par_chunks_mut(BLOCK)
+                        .zip(u.par_chunks_mut(BLOCK))
+                        .zip(g.par_chunks(BLOCK).zip(t.par_chunks(BLOCK).zip(r.par_chunks(BLOCK))))
+                        .enumerate()
+                        .map(|(b, ((p, u), (g, (t, r))))| {
+                            step_capped(b * BLOCK, p, u, g, t, r, tau, tau_e, delta, cap)
+                        }),
+                )
+            } else {
+                in_order(
+                    p.par_chunks_mut(BLOCK)
+                        .zip(u.par_chunks_mut(BLOCK))
+                        .zip(g.par_chunks(BLOCK).zip(t.par_chunks(BLOCK).zip(r.par_chunks(BLOCK))))
+                        .enumerate()
+                        .map(|(b, ((p, u), (g, (t, r))))| {
+                            let (mut ch, mut sum) = (Vec::new(), 0.0);
+                            let cells =
+                                p.iter_mut().zip(u.iter_mut().zip(g.iter().zip(t.iter().zip(r))));
+                            for (i, (p, (u, (g, (t, r))))) in cells.enumerate() {
+                                let k = b * BLOCK + i;
+                                *u = f * *u - tau * r;
+                                if *p > 0.0 {
+                                    let free = f * *p - tau * t;
+                                    *p = free.max(0.0);
+                                    if free < 0.0 {
+                                        ch.push((k, -free));
+                                    }
+                                } else if *g < delta {
+                                    *p = tau_e * (delta - g);
+                                    ch.push((k, *p));
                                 }
-                            } else if *g < delta {
-                                *p = tau_e * (delta - g);
-                                ch.push((k, *p));
+                                sum += *p;
                             }
-                            sum += *p;
-                        }
-                        (ch, sum)
-                    }),
-            );
+                            Step { changes: ch, sum }
+                        }),
+                )
+            };
             scale = 1.0;
-            let sum = blocks.iter().fold(0.0, |a, b| a + b.1);
-            let changes: Vec<(usize, f64)> = blocks.into_iter().flat_map(|b| b.0).collect();
+            let sum = blocks.iter().fold(0.0, |a, b| a + b.sum);
+            let changes: Vec<(usize, f64)> = blocks.into_iter().flat_map(|b| b.changes).collect();
             conjugate = true;
             // Few changes: add their columns to u; many: a full product at the next check
             // (the same cost as correcting by one convolution, and exact).
@@ -368,7 +394,9 @@ impl NormalProblem<'_> {
                     if sum == 0.0 {
                         // Everything left the contact: restart from the rigid interference.
                         let (k0, d) = (op.self_term(), delta);
-                        p.par_iter_mut().zip(g0).for_each(|(p, g)| *p = ((d - g) / k0).max(0.0));
+                        p.par_iter_mut()
+                            .zip(g0)
+                            .for_each(|(p, g)| *p = ((d - g) / k0).max(0.0).min(cap));
                         conjugate = false;
                         stale = true;
                     }
@@ -384,8 +412,10 @@ impl NormalProblem<'_> {
             let mut acc = (0.0, 0.0);
             for (g, p) in g.iter_mut().zip(p) {
                 *g -= delta;
-                if *p > 0.0 {
+                if *p > 0.0 && *p < cap {
                     acc = (acc.0 + p * g.abs(), acc.1 + p);
+                } else if *p >= cap {
+                    acc.1 += p;
                 }
             }
             acc
@@ -415,9 +445,65 @@ pub(super) enum Start<'b> {
     Owned(Vec<f64>),
 }
 
+/// What one step's pass over a block gives: the departures from $p - \tau t$ whose kernel
+/// columns correct $u$, and the pressure sum.
+struct Step {
+    changes: Vec<(usize, f64)>,
+    sum: f64,
+}
+
+/// The step of the iteration on one block under a cap (approach control; the block's first
+/// cell `k0`): the step along $-t$ on the cells strictly between 0 and the cap, projected
+/// onto $[0, \text{cap}]$; a cell off the contact whose gap is negative re-enters with
+/// $\tau_e(\delta - g)$, a plastic cell whose gap is open leaves the cap by
+/// $\tau_e(g - \delta)$ (both kept in $[0, \text{cap}]$).
+#[allow(clippy::too_many_arguments)]
+fn step_capped(
+    k0: usize,
+    p: &mut [f64],
+    u: &mut [f64],
+    g: &[f64],
+    t: &[f64],
+    r: &[f64],
+    tau: f64,
+    tau_e: f64,
+    delta: f64,
+    cap: f64,
+) -> Step {
+    let mut s = Step { changes: Vec::new(), sum: 0.0 };
+    let cells = p.iter_mut().zip(u.iter_mut().zip(g.iter().zip(t.iter().zip(r))));
+    for (i, (p, (u, (g, (t, r))))) in cells.enumerate() {
+        let k = k0 + i;
+        *u -= tau * r;
+        if *p >= cap {
+            if *g > delta {
+                let new = (cap - tau_e * (g - delta)).max(0.0);
+                s.changes.push((k, new - cap));
+                *p = new;
+            }
+        } else if *p > 0.0 {
+            let free = *p - tau * t;
+            if free < 0.0 {
+                *p = 0.0;
+                s.changes.push((k, -free));
+            } else if free >= cap {
+                *p = cap;
+                s.changes.push((k, cap - free));
+            } else {
+                *p = free;
+            }
+        } else if *g < delta {
+            *p = (tau_e * (delta - g)).min(cap);
+            s.changes.push((k, *p));
+        }
+        s.sum += *p;
+    }
+    s
+}
+
 /// What one pass over the gap $g^0 + u$ gathers for the approach and the residuals: over the
-/// contact set ($p > 0$) the sum, count, largest and smallest gap and the pressure sum; off
-/// it the smallest gap.
+/// cells strictly between 0 and the cap the sum, count, largest and smallest gap; at the cap
+/// (plastic) the largest gap; off the contact the smallest gap; and the pressure sum.
 #[derive(Debug, Clone, Copy)]
 struct GapSums {
     sum: f64,
@@ -426,6 +512,7 @@ struct GapSums {
     min_in: f64,
     min_out: f64,
     pressure: f64,
+    max_plastic: f64,
 }
 
 impl GapSums {
@@ -436,10 +523,15 @@ impl GapSums {
         min_in: f64::INFINITY,
         min_out: f64::INFINITY,
         pressure: 0.0,
+        max_plastic: f64::NEG_INFINITY,
     };
 
-    fn add(&mut self, g: f64, p: f64) {
-        if p > 0.0 {
+    /// A cell of gap (without the approach) `g` and pressure `p`, at the cap if `plastic`.
+    fn add(&mut self, g: f64, p: f64, plastic: bool) {
+        if plastic {
+            self.max_plastic = self.max_plastic.max(g);
+            self.pressure += p;
+        } else if p > 0.0 {
             self.sum += g;
             self.cells += 1;
             self.max_in = self.max_in.max(g);
@@ -458,6 +550,7 @@ impl GapSums {
             min_in: a.min_in.min(b.min_in),
             min_out: a.min_out.min(b.min_out),
             pressure: a.pressure + b.pressure,
+            max_plastic: a.max_plastic.max(b.max_plastic),
         }
     }
 
@@ -465,8 +558,13 @@ impl GapSums {
     /// `delta`, `scale` the gap scale, `sum` the prescribed $\sum_k p_k$ (force control).
     fn residuals(&self, delta: f64, scale: f64, sum: Option<f64>) -> (f64, f64) {
         let scale = if scale > 0.0 { scale } else { f64::MIN_POSITIVE };
-        // |g - delta| on the contact set, penetration delta - g off it.
-        let e = (self.max_in - delta).max(delta - self.min_in).max(delta - self.min_out).max(0.0);
+        // |g - delta| on the contact set below the cap, penetration delta - g off it, an
+        // open gap g - delta at the cap.
+        let e = (self.max_in - delta)
+            .max(delta - self.min_in)
+            .max(delta - self.min_out)
+            .max(self.max_plastic - delta)
+            .max(0.0);
         let rf = sum.map_or(0.0, |s| (self.pressure - s).abs() / s);
         (e / scale, rf)
     }

@@ -124,6 +124,7 @@
 //! [`NormalSolution::contact_grid`] turns the contact cells and their pressure into a
 //! [`ContactGrid`] for the tangential solvers (partial slip on the computed contact).
 
+mod capped;
 mod iteration;
 mod nested;
 mod passes;
@@ -247,6 +248,7 @@ pub struct NormalProblem<'a> {
     nesting: Nesting,
     preconditioner: Preconditioner,
     memory_limit: Option<u64>,
+    hardness: Option<f64>,
 }
 
 impl<'a> NormalProblem<'a> {
@@ -317,6 +319,7 @@ impl<'a> NormalProblem<'a> {
             nesting: Nesting::Nested { min_cells: NEST_MIN_CELLS },
             preconditioner: Preconditioner::Spectral,
             memory_limit: None,
+            hardness: None,
         })
     }
 
@@ -368,6 +371,20 @@ impl<'a> NormalProblem<'a> {
         self
     }
 
+    /// Cap the pressure at the hardness `h` (Pa): an elastic–perfectly plastic interface
+    /// (module docs, "Hardness"). Checked ($h > 0$, finite) by [`NormalProblem::solve`].
+    #[must_use]
+    pub fn with_hardness(mut self, h: f64) -> Self {
+        self.hardness = Some(h);
+        self
+    }
+
+    /// The hardness, if the pressure is capped.
+    #[must_use]
+    pub fn hardness(&self) -> Option<f64> {
+        self.hardness
+    }
+
     /// Refuse to solve ([`Error::MemoryExceeded`], before anything is planned) when the solve
     /// would need more than `bytes` of working memory ([`NormalProblem::memory_bytes`]).
     #[must_use]
@@ -407,7 +424,9 @@ impl<'a> NormalProblem<'a> {
     /// [`NormalProblem::memory_bytes`] of this problem's lattice.
     #[must_use]
     pub fn memory_needed(&self) -> u64 {
-        Self::memory_bytes(self.nx, self.ny, self.boundary)
+        // Under a cap the plastic cells' displacement is kept apart: one more lattice vector.
+        let extra = if self.hardness.is_some() { 8 * (self.nx * self.ny) as u64 } else { 0 };
+        Self::memory_bytes(self.nx, self.ny, self.boundary) + extra
     }
 
     /// [`Error::MemoryExceeded`] when the solve needs more than the limit.
@@ -503,6 +522,20 @@ impl<'a> NormalProblem<'a> {
                 None
             }
         };
+        if let Some(h) = self.hardness {
+            positive("hardness", h)?;
+            if let Some(f) = force {
+                let area = self.hx * self.hy * (self.nx * self.ny) as f64;
+                if f >= h * area {
+                    return Err(Error::AboveCapacity {
+                        force: f,
+                        hardness: h,
+                        area,
+                        capacity: h * area,
+                    });
+                }
+            }
+        }
         if let (NormalLoad::Approach(d), Boundary::Periodic) = (load, self.boundary) {
             let mean = in_order(self.gap.par_chunks(BLOCK).map(|b| b.iter().sum::<f64>()))
                 .iter()

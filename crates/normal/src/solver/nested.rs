@@ -87,6 +87,7 @@ impl NormalProblem<'_> {
             nesting: self.nesting,
             preconditioner: self.preconditioner,
             memory_limit: None,
+            hardness: self.hardness,
         };
         let s = coarse.solve(load).ok()?;
         drop(gap);

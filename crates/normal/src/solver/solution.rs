@@ -24,6 +24,10 @@ pub struct NormalInfo {
     pub coarse_iterations: usize,
     /// Wall time of the coarser lattices, seconds (part of `solve_seconds`).
     pub coarse_seconds: f64,
+    /// Under force control with a hardness: the approach-controlled solves of the outer
+    /// secant on the approach (module docs, "Hardness"); 0 otherwise. `iterations` and
+    /// `products` are summed over them.
+    pub approach_steps: usize,
     /// Gap residual $r_g$ (module docs).
     pub gap_residual: f64,
     /// Complementarity residual $r_c$ (module docs).
@@ -80,6 +84,19 @@ pub struct NormalSolution {
     pub no_contact: bool,
     /// Free boundary: the contact reaches a lattice edge.
     pub touches_boundary: bool,
+    /// The hardness that capped the pressure (Pa), if any.
+    pub hardness: Option<f64>,
+    /// Plastic flag per cell ($p_k$ at the hardness); empty without a hardness.
+    pub plastic: Vec<bool>,
+    /// Plastic displacement per cell (m): the interpenetration $\delta - g^0_k - u_k \ge 0$
+    /// that plastic flow removes at a plastic cell, 0 elsewhere; empty without a hardness.
+    /// The gap after loading is 0 at a plastic cell.
+    pub plastic_displacement: Vec<f64>,
+    /// Number of plastic cells.
+    pub plastic_cells: usize,
+    /// The share of the contact that is plastic: plastic cells over contact cells (0 without
+    /// contact or hardness).
+    pub plastic_fraction: f64,
     /// Termination information.
     pub info: NormalInfo,
     /// The coarser levels of a nested start, coarsest first (empty for a cold or warm start).
@@ -135,6 +152,7 @@ impl NormalProblem<'_> {
             levels: 0,
             coarse_iterations: 0,
             coarse_seconds: 0.0,
+            approach_steps: 0,
             gap_residual: residuals.0,
             complementarity_residual: residuals.1,
             force_residual: residuals.2,
@@ -150,11 +168,26 @@ impl NormalProblem<'_> {
     pub(super) fn finish(
         &self,
         pressure: Vec<f64>,
-        gap: Vec<f64>,
+        mut gap: Vec<f64>,
         approach: f64,
         info: NormalInfo,
     ) -> NormalSolution {
         let (nx, ny) = (self.nx, self.ny);
+        let (plastic, plastic_displacement) = match self.hardness {
+            None => (Vec::new(), Vec::new()),
+            Some(h) => {
+                let plastic: Vec<bool> = pressure.iter().map(|&p| p >= h).collect();
+                let mut w = vec![0.0; nx * ny];
+                for ((w, g), &pl) in w.iter_mut().zip(gap.iter_mut()).zip(&plastic) {
+                    if pl {
+                        *w = (-*g).max(0.0);
+                        *g = 0.0;
+                    }
+                }
+                (plastic, w)
+            }
+        };
+        let plastic_cells = plastic.iter().filter(|&&c| c).count();
         let area = self.hx * self.hy;
         let contact: Vec<bool> = pressure.iter().map(|&p| p > 0.0).collect();
         let contact_cells = contact.iter().filter(|&&c| c).count();
@@ -176,6 +209,15 @@ impl NormalProblem<'_> {
             fraction: contact_cells as f64 / (nx * ny) as f64,
             no_contact: contact_cells == 0,
             touches_boundary,
+            hardness: self.hardness,
+            plastic_fraction: if contact_cells > 0 {
+                plastic_cells as f64 / contact_cells as f64
+            } else {
+                0.0
+            },
+            plastic,
+            plastic_displacement,
+            plastic_cells,
             pressure,
             contact,
             gap,

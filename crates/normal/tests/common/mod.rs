@@ -116,3 +116,77 @@ pub fn dense_active_set(k: &[f64], g0: &[f64], area: f64, load: f64) -> (Vec<f64
     }
     panic!("active set did not terminate");
 }
+
+/// Exact active-set solve of the box-constrained problem (a hardness cap) at the approach
+/// `delta`: `p` with `0 <= p <= cap` and the gap `g = K p + g0 - delta` zero where
+/// `0 < p < cap`, `>= 0` where `p = 0` and `<= 0` where `p = cap`. The system on the free set
+/// by LU, one cell moved per step (the most violated condition), from the cells that the rigid
+/// interference overlaps.
+pub fn dense_box_approach(k: &[f64], g0: &[f64], delta: f64, cap: f64) -> Vec<f64> {
+    let n = g0.len();
+    // 0: off, 1: free, 2: at the cap.
+    let mut state: Vec<u8> = g0.iter().map(|&g| u8::from(g < delta)).collect();
+    let scale = delta - g0.iter().copied().fold(f64::INFINITY, f64::min);
+    for _ in 0..20 * n {
+        let free: Vec<usize> = (0..n).filter(|&i| state[i] == 1).collect();
+        let m = free.len();
+        let mut a = vec![0.0; m * m];
+        let mut b = vec![0.0; m];
+        for (r, &i) in free.iter().enumerate() {
+            for (c, &j) in free.iter().enumerate() {
+                a[r * m + c] = k[i * n + j];
+            }
+            let plastic: f64 = (0..n).filter(|&j| state[j] == 2).map(|j| k[i * n + j] * cap).sum();
+            b[r] = delta - g0[i] - plastic;
+        }
+        let x = if m > 0 { lu_solve(a, b) } else { Vec::new() };
+        let mut p: Vec<f64> = state.iter().map(|&s| if s == 2 { cap } else { 0.0 }).collect();
+        for (r, &i) in free.iter().enumerate() {
+            p[i] = x[r];
+        }
+        let worst_bound = free
+            .iter()
+            .map(|&i| (i, (-p[i]).max(p[i] - cap)))
+            .filter(|(_, v)| *v > 0.0)
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((i, _)) = worst_bound {
+            state[i] = if p[i] < 0.0 { 0 } else { 2 };
+            continue;
+        }
+        let gap = |i: usize| (0..n).map(|j| k[i * n + j] * p[j]).sum::<f64>() + g0[i] - delta;
+        let worst_gap = (0..n)
+            .filter(|&i| state[i] != 1)
+            .map(|i| (i, if state[i] == 0 { -gap(i) } else { gap(i) }))
+            .filter(|(_, v)| *v > 1e-14 * scale)
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        match worst_gap {
+            Some((i, _)) => state[i] = 1,
+            None => return p,
+        }
+    }
+    panic!("dense box active set did not finish");
+}
+
+/// [`dense_box_approach`] under the force `load` (`area` the cell area): the approach found
+/// by bisection on the force, which grows monotonically with the approach, down to adjacent
+/// doubles. Returns `p` and the approach.
+pub fn dense_box_force(k: &[f64], g0: &[f64], area: f64, load: f64, cap: f64) -> (Vec<f64>, f64) {
+    let force = |d: f64| dense_box_approach(k, g0, d, cap).iter().sum::<f64>() * area;
+    let gmin = g0.iter().copied().fold(f64::INFINITY, f64::min);
+    let (mut lo, mut hi) = (gmin, gmin + 1e-12);
+    while force(hi) < load {
+        hi = gmin + 2.0 * (hi - gmin);
+    }
+    loop {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if force(mid) < load {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (dense_box_approach(k, g0, hi, cap), hi)
+}
