@@ -86,6 +86,27 @@
 //! curvature falls below that of the softest non-uniform mode goes only to the first cell
 //! that leaves the contact.
 //!
+//! # Hardness
+//!
+//! With [`NormalProblem::with_hardness`] the pressure is capped at the hardness $H$ (an
+//! elastic–perfectly plastic interface, as tamaas's saturated pressure): $0 \le p_k \le H$,
+//! with $g_k = 0$ where $0 < p_k < H$, $g_k \ge 0$ where $p_k = 0$ and $g_k \le 0$ where
+//! $p_k = H$ (plastic: the interpenetration $-g_k$ is the plastic displacement that plastic
+//! flow removes; the solution reports the gap there as 0). Under displacement control this is
+//! the quadratic program above on the box $0 \le p \le H$, and the iteration is the same
+//! with the box: the conjugate directions live on the free set $0 < p < H$, the step is
+//! projected onto $[0, H]$, and besides the re-entry of penetrating cells a plastic cell
+//! whose gap has opened leaves the cap by $\tau_e(g_k - \delta)$. The gap residual counts an
+//! open gap at the cap as a violation. Under force control the approach is the unknown: a
+//! secant on $F(\delta)$ (continuous, non-decreasing), kept inside the bracket of the
+//! approaches tried (false position when it leaves it), over displacement-controlled solves,
+//! each from the previous pressure and, far from the load, to a looser tolerance (a
+//! thousandth of the force error); [`NormalInfo::approach_steps`] counts them. (Rescaling
+//! the pressure to the load, as the elastic iteration does, pushes cells through the cap and
+//! does not converge once most of the contact is plastic.) The nested start carries the
+//! coarse capped pressure, and its approach is estimated from it. A force at or above $H$
+//! times the lattice area is refused ([`Error::AboveCapacity`]).
+//!
 //! # Certified stop: the residuals
 //!
 //! At every iteration the current pressure $p$ is checked against the conditions above with
@@ -105,7 +126,8 @@
 //! * **force residual** $r_F = |h_xh_y\sum_k p_k - P|/P$ under force control (0 under
 //!   displacement control, where the force is the output $h_xh_y\sum_k p_k$).
 //!
-//! [`NormalInfo::residual`] is the largest of the three. $p \ge 0$ holds exactly.
+//! [`NormalInfo::residual`] is the largest of the three. $p \ge 0$ (and $p \le H$ under a
+//! hardness) holds exactly.
 //!
 //! # Outcomes
 //!
