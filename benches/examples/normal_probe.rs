@@ -12,7 +12,9 @@
 //! of the lattice side. Tolerance 1e-8 unless `tol=`; options `cold` (no nesting),
 //! `identity` (no preconditioner), `write=FILE` (the initial gap as little-endian f64, for
 //! `scripts/compare_aspher.py`, then exit), `pressure=FILE` (write the pressure after the
-//! solve). Prints one line: the levels with their iterations, the fine iterations and FFT
+//! solve), `hardness=H` (cap the pressure at H Pa, issue 32; the line then also gives the
+//! plastic share of the contact and the peak pressure), `approach=D` (approach control at D m
+//! instead of the force). Prints one line: the levels with their iterations, the fine iterations and FFT
 //! products, the residuals, the contact fraction, the times (set-up, coarse levels, whole
 //! solve), one product's time, and the peak resident memory in doubles per cell.
 
@@ -67,8 +69,15 @@ fn main() {
     if flag("identity") {
         problem = problem.with_preconditioner(Preconditioner::Identity);
     }
+    if let Some(h) = opt("hardness=").and_then(|v| v.parse().ok()) {
+        problem = problem.with_hardness(h);
+    }
     let (c0, t0) = (cpu_seconds(), Instant::now());
-    let s = problem.solve(NormalLoad::Force(load)).expect("solve");
+    let control = match opt("approach=").and_then(|v| v.parse().ok()) {
+        Some(d) => NormalLoad::Approach(d),
+        None => NormalLoad::Force(load),
+    };
+    let s = problem.solve(control).expect("solve");
     let (wall, cpu) = (t0.elapsed().as_secs_f64(), cpu_seconds() - c0);
     let peak = peak_rss() as f64 / (8.0 * (n * n) as f64);
     let levels: Vec<String> = s
@@ -77,11 +86,12 @@ fn main() {
         .map(|l| format!("{}:{}+{}", l.lattice.0, l.iterations, l.products))
         .collect();
     println!(
-        "{case} {n}x{n} tol {tol:e}: levels [{}] fine {} iterations, {} products + {} preconditioner; \
-         residuals gap {:.1e} compl {:.1e} force {:.1e}; contact {:.4} ({} cells); \
+        "{case} {n}x{n} tol {tol:e}: levels [{}] fine {} iterations ({} approach steps), {} products + {} preconditioner; \
+         residuals gap {:.1e} compl {:.1e} force {:.1e}; contact {:.4} ({} cells, plastic {:.4}, peak {:.3e} Pa, force {:.4e} N, approach {:.6e} m); \
          setup {:.3} s, coarse {:.3} s, solve {:.3} s (wall {wall:.3} s, CPU {cpu:.2} s); peak {peak:.2} doubles/cell",
         levels.join(" "),
         s.info.iterations,
+        s.info.approach_steps,
         s.info.products,
         s.info.preconditioner_products,
         s.info.gap_residual,
@@ -89,6 +99,10 @@ fn main() {
         s.info.force_residual,
         s.fraction,
         s.contact_cells,
+        s.plastic_fraction,
+        s.peak_pressure,
+        s.force,
+        s.approach,
         s.info.setup_seconds,
         s.info.coarse_seconds,
         s.info.solve_seconds,

@@ -81,6 +81,19 @@ pub enum Error {
         /// About how many cells fit in the limit (at the same boundary).
         fits: usize,
     },
+    /// Under a hardness cap the lattice carries at most the hardness times its area (every
+    /// cell plastic); a force at or above that has no solution.
+    #[error("a normal force of {force:e} N cannot be carried under the hardness {hardness:e} Pa: the lattice of {area:e} m^2 carries less than {capacity:e} N even fully plastic (enlarge the lattice, raise the hardness or lower the force)")]
+    AboveCapacity {
+        /// The force asked for (N).
+        force: f64,
+        /// The hardness (Pa).
+        hardness: f64,
+        /// The lattice area (m²).
+        area: f64,
+        /// hardness x area (N).
+        capacity: f64,
+    },
     /// An error of the lattice (grid construction, operators).
     #[error(transparent)]
     Lattice(#[from] stickslip_lattice::Error),

@@ -9,13 +9,12 @@ use std::f64::consts::PI;
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::rectangle::{pressure_uz, Compliance, Rect};
 use stickslip_halfspace::Material;
-use stickslip_lattice::roughness::{Rms, SelfAffine};
 use stickslip_normal::{
     Boundary, Error, Nesting, NormalLoad, NormalProblem, NormalSolution, Preconditioner, Tolerance,
 };
 
 mod common;
-use common::dense_active_set;
+use common::{dense_active_set, dense_matrix, rough_periodic_gap};
 
 /// Tolerances, each with its reason.
 mod tol {
@@ -122,24 +121,13 @@ fn nested_against_dense_active_set() {
 
     // Periodic, even sides: the dense matrix from the operator's own columns.
     let (nx, ny) = (24usize, 20usize);
-    let n = nx * ny;
     let g0 = rippled_sphere(nx, ny, h, r, 2e-9);
     let pb = NormalProblem::new(nx, ny, (h, h), &g0, [m, rigid], Boundary::Periodic)
         .unwrap()
         .with_tolerance(tolerance(1e-12))
         .with_nesting(Nesting::Nested { min_cells: 5 });
     let op = pb.operator();
-    let mut scratch = op.make_scratch();
-    let mut kp = vec![0.0; n * n];
-    let (mut e_j, mut col) = (vec![0.0; n], vec![0.0; n]);
-    for j in 0..n {
-        e_j.fill(0.0);
-        e_j[j] = 1.0;
-        op.apply(&e_j, &mut col, &mut scratch);
-        for i in 0..n {
-            kp[i * n + j] = col[i];
-        }
-    }
+    let kp = dense_matrix(&op);
     let load = 30.0;
     let (pd, dd) = dense_active_set(&kp, &g0, h * h, load);
     let s = pb.solve_with(&op, NormalLoad::Force(load), None).unwrap();
@@ -164,19 +152,7 @@ fn nested_against_dense_active_set() {
 fn nested_matches_cold_solves_on_a_rough_surface() {
     let n = 128;
     let size = 1e-3;
-    let h = SelfAffine {
-        hurst: 0.8,
-        k_low: 2.0,
-        k_rolloff: 2.0,
-        k_high: 32.0,
-        rms: Rms::Height(1e-6),
-        seed: 11,
-    }
-    .heights(n, n, [size, size])
-    .unwrap();
-    let top = h.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let g0: Vec<f64> = h.iter().map(|v| top - v).collect();
-    let cell = size / n as f64;
+    let (g0, cell) = rough_periodic_gap(n, size, 11);
     let pb = NormalProblem::new(
         n,
         n,
@@ -387,19 +363,7 @@ fn tiny_contact_refused_after_nesting() {
 fn thread_count_and_warm_start() {
     let n = 128;
     let size = 1e-3;
-    let hts = SelfAffine {
-        hurst: 0.8,
-        k_low: 2.0,
-        k_rolloff: 2.0,
-        k_high: 32.0,
-        rms: Rms::Height(1e-6),
-        seed: 5,
-    }
-    .heights(n, n, [size, size])
-    .unwrap();
-    let top = hts.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let g0: Vec<f64> = hts.iter().map(|v| top - v).collect();
-    let cell = size / n as f64;
+    let (g0, cell) = rough_periodic_gap(n, size, 5);
     let pb = NormalProblem::new(
         n,
         n,

@@ -12,7 +12,7 @@ use stickslip_traction::closed::Mindlin;
 use stickslip_traction::{ElementState, FastProblem, Load, Tolerance};
 
 mod common;
-use common::dense_active_set;
+use common::{dense_active_set, dense_matrix};
 
 /// Tolerances, each with its reason.
 mod tol {
@@ -352,17 +352,7 @@ fn against_dense_direct_solve() {
         .unwrap()
         .with_tolerance(tight());
     let op = pb.operator();
-    let mut scratch = op.make_scratch();
-    let mut kp = vec![0.0; n * n];
-    let (mut e_j, mut col) = (vec![0.0; n], vec![0.0; n]);
-    for j in 0..n {
-        e_j.fill(0.0);
-        e_j[j] = 1.0;
-        op.apply(&e_j, &mut col, &mut scratch);
-        for i in 0..n {
-            kp[i * n + j] = col[i];
-        }
-    }
+    let kp = dense_matrix(&op);
     let load = 6.0;
     let (pd, dd) = dense_active_set(&kp, &g0, h * h, load);
     let s = pb.solve_with(&op, NormalLoad::Force(load), None).unwrap();

@@ -118,6 +118,8 @@ pub(crate) fn render(
             slip_y,
             dissipation,
             slip_amplitude,
+            plastic,
+            plastic_displacement,
         } if !x.is_empty() => {
             // A surface's, a 3D rolling contact's and a load path's maps also as (ny, nx)
             // arrays: pressure, tractions, gap, micro-slip or dissipation and slip range,
@@ -134,6 +136,8 @@ pub(crate) fn render(
                     ("slip_y", slip_y),
                     ("dissipation", dissipation),
                     ("slip_amplitude", slip_amplitude),
+                    ("plastic", plastic),
+                    ("plastic_displacement", plastic_displacement),
                 ] {
                     if let Some(m) = m {
                         maps.push((name, m));

@@ -63,8 +63,8 @@ pub mod units;
 pub use error::{Check, ErrorKind, Issue, SceneError};
 pub use scene::{
     patch_bounds, Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, History,
-    HistoryControl, Indenter, Load, Method, Motion, NormalLoad, NormalSweep, Outputs, Patch,
-    PatchShape, PathSource, Profile, Scene, SceneBuilder, SolverOptions, Source, Substrate,
+    HistoryControl, Indenter, Interface, Load, Method, Motion, NormalLoad, NormalSweep, Outputs,
+    Patch, PatchShape, PathSource, Profile, Scene, SceneBuilder, SolverOptions, Source, Substrate,
     Surface, SurfaceBoundary, DEFAULT_SCENE, MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};

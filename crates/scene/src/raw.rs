@@ -69,6 +69,17 @@ pub(crate) struct RawScene {
     pub outputs: Option<RawOutputs>,
     /// How to solve; the planner chooses when absent.
     pub solver: Option<RawSolver>,
+    /// The interface beyond elastic contact (a hardness cap); elastic when absent.
+    pub interface: Option<RawInterface>,
+}
+
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawInterface {
+    /// Hardness H (stress, e.g. "2 GPa"): the contact pressure is capped at H (surface
+    /// lattices only).
+    #[schemars(with = "Option<Qty>")]
+    pub hardness: Option<SQty>,
 }
 
 #[derive(Debug, Deserialize, JsonSchema)]

@@ -202,9 +202,14 @@ pub const PREFIXES: [(&str, i32, f64); 10] = [
     ("G", 9, 1e9),
 ];
 
-/// The units that take an SI prefix: metre, newton, pascal, second.
-pub const PREFIXABLE: [(&str, Dim); 4] =
-    [("m", Dim::LENGTH), ("N", Dim::FORCE), ("Pa", Dim::STRESS), ("s", Dim::TIME)];
+/// The units that take an SI prefix: metre, newton, pascal, second, joule.
+pub const PREFIXABLE: [(&str, Dim); 5] = [
+    ("m", Dim::LENGTH),
+    ("N", Dim::FORCE),
+    ("Pa", Dim::STRESS),
+    ("s", Dim::TIME),
+    ("J", Dim::MOMENT),
+];
 
 /// The units that take no prefix, with their SI factor and dimension.
 pub const PLAIN: [(&str, f64, Dim); 10] = [
@@ -456,9 +461,13 @@ mod tests {
                 assert!(rel(v, want) < 1e-14, "{text}: {v} against {want}");
             }
         }
-        assert_eq!(count, 40);
+        assert_eq!(count, 50);
+        // Work of adhesion (issue 32): energy per area.
+        let w = parse_quantity("50 mJ/m^2", Dim::FORCE_PER_LENGTH, "q").unwrap();
+        assert!(rel(w, 0.05) < 1e-15, "{w}");
+        assert_eq!(parse_quantity("0.05 J/m^2", Dim::FORCE_PER_LENGTH, "q").unwrap(), 0.05);
         // The three spellings of micro are one prefix.
-        for b in ["m", "N", "Pa", "s"] {
+        for b in ["m", "N", "Pa", "s", "J"] {
             let d = atom(b).unwrap().1;
             let u = parse_quantity(&format!("7 u{b}"), d, "q").unwrap();
             assert_eq!(parse_quantity(&format!("7 \u{b5}{b}"), d, "q").unwrap(), u);

@@ -112,6 +112,18 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
     let f = friction_of(plan);
     let (coulomb_limit, residual_limit) = limits(plan);
     let scale = if f > 0.0 { f * c.p0 } else { c.p0 };
+    if let Recipe::Contact(ContactRecipe {
+        normal: crate::plan::recipe::ContactNormal::Surface { hardness: Some(h), .. },
+        ..
+    }) = &plan.recipe
+    {
+        b.at_most(
+            "hardness",
+            c.p0 / h - 1.0,
+            0.0,
+            "the peak pressure over the hardness, less 1 (the cap holds)",
+        );
+    }
     match &out.surface {
         SurfaceOut::Line { x, p, q, .. } if !x.is_empty() => {
             let worst = p

@@ -70,6 +70,8 @@ impl Lattice {
             gap,
             dissipation: self.dissipation,
             slip_amplitude: self.slip_range,
+            plastic: None,
+            plastic_displacement: None,
         }
     }
 }

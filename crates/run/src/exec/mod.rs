@@ -259,6 +259,7 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
             normal_load: n.load,
             area: None,
             fraction: None,
+            plastic_fraction: None,
         },
         zones: t.zones(n.a, r.friction.is_some(), n.friction_possible),
         forces: Forces {
@@ -343,6 +344,10 @@ fn contact_parts(
             normal_load: n.load,
             area: n.surface.as_ref().map(|s| s.area),
             fraction: n.surface.as_ref().map(|s| s.fraction),
+            plastic_fraction: n
+                .surface
+                .as_ref()
+                .and_then(|s| s.plastic.as_ref().map(|p| p.fraction)),
         },
         zones: t.zones,
         forces: Forces {
@@ -356,7 +361,13 @@ fn contact_parts(
         },
         rigid: t.rigid,
         surface: if r.lattice_output {
-            lat.into_surface(n.surface.map(|s| s.gap))
+            match n.surface {
+                Some(s) => {
+                    let plastic = s.plastic.map(|p| (p.mask, p.displacement));
+                    lat.into_surface(Some(s.gap)).with_plastic(plastic)
+                }
+                None => lat.into_surface(None),
+            }
         } else {
             lattice::Lattice::empty().into_surface(None)
         },

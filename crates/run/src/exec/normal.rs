@@ -135,12 +135,23 @@ pub(crate) struct ContactSolution {
     pub surface: Option<SurfaceContact>,
 }
 
+/// The plastic part of a capped surface solution.
+#[derive(Debug, Clone)]
+pub(crate) struct Plastic {
+    pub fraction: f64,
+    pub mask: Vec<Vec<f64>>,
+    pub displacement: Vec<Vec<f64>>,
+}
+
 /// What the normal solve of a surface adds.
 #[derive(Debug, Clone)]
 pub(crate) struct SurfaceContact {
     pub area: f64,
     pub fraction: f64,
     pub gap: Vec<Vec<f64>>,
+    /// Under a hardness: the share of the contact at the hardness, the plastic mask (1 at
+    /// the hardness, else 0) and the plastic displacement (m), `[i][j]`.
+    pub plastic: Option<Plastic>,
     /// The load sweep's curves, when the scene asks for one.
     pub curve: Option<LoadCurve>,
 }
@@ -150,8 +161,8 @@ pub(crate) fn contact(r: &ContactRecipe, cx: &mut Ctx<'_>) -> Result<ContactSolu
     let n = r.grid;
     // (semi-axes, peak pressure, load, approach) and the grid with its lattice corner and size
     let ((ax, ay, p0, load, indentation), (grid, x0, y0, nx, ny)) = match &r.normal {
-        ContactNormal::Surface { surface, load, tolerance, sweep } => {
-            return surface_contact(surface, *load, *tolerance, *sweep, r, cx);
+        ContactNormal::Surface { surface, load, tolerance, sweep, hardness } => {
+            return surface_contact(surface, *load, *tolerance, *sweep, *hardness, r, cx);
         }
         ContactNormal::Sphere { radius, force, e_star } => {
             let h = HertzSphere::new(*force, *radius, *e_star)
@@ -210,6 +221,7 @@ fn surface_contact(
     load: SurfaceLoad,
     tolerance: f64,
     sweep: Option<NormalSweep>,
+    hardness: Option<f64>,
     r: &ContactRecipe,
     cx: &mut Ctx<'_>,
 ) -> Result<ContactSolution, SceneError> {
@@ -221,9 +233,12 @@ fn surface_contact(
         SurfaceBoundary::Periodic => Boundary::Periodic,
     };
     let tol = Tolerance::relative(tolerance).map_err(|e| solver_err("tolerance", e))?;
-    let problem = NormalProblem::new(nx, ny, (hx, hy), &gap, r.bodies.pair(), boundary)
+    let mut problem = NormalProblem::new(nx, ny, (hx, hy), &gap, r.bodies.pair(), boundary)
         .map_err(surface_err)?
         .with_tolerance(tol);
+    if let Some(h) = hardness {
+        problem = problem.with_hardness(h);
+    }
     let last = match load {
         SurfaceLoad::Force(p) => TNormalLoad::Force(p),
         SurfaceLoad::Approach(d) => TNormalLoad::Approach(d),
@@ -361,6 +376,18 @@ pub(crate) fn surface_solution(
         sol.info.force_residual,
         tolerance
     ));
+    if let Some(h) = sol.hardness {
+        let wmax = sol.plastic_displacement.iter().copied().fold(0.0, f64::max);
+        cx.notes.push(format!(
+            "hardness cap {h:.4e} Pa (interface.hardness): {} plastic cells, {:.4} of the contact, largest plastic displacement {wmax:.3e} m{}; later stages take the capped pressure",
+            sol.plastic_cells,
+            sol.plastic_fraction,
+            match sol.info.approach_steps {
+                0 => String::new(),
+                k => format!("; force control by {k} approach-controlled solves (secant on the approach)"),
+            }
+        ));
+    }
     let grid = sol.contact_grid().map_err(surface_err)?;
     let mut lat = Lattice::new(x0, y0, hx, hy, nx, ny);
     // gap[i][j] at (x[i], y[j]) from the solver's row-major j * nx + i
@@ -384,7 +411,22 @@ pub(crate) fn surface_solution(
         indentation: Some(sol.approach),
         grid,
         lattice: lat,
-        surface: Some(SurfaceContact { area: sol.area, fraction: sol.fraction, gap: gaps, curve }),
+        surface: Some(SurfaceContact {
+            area: sol.area,
+            fraction: sol.fraction,
+            gap: gaps,
+            curve,
+            plastic: sol.hardness.map(|_| {
+                let map = |v: &dyn Fn(usize) -> f64| -> Vec<Vec<f64>> {
+                    (0..nx).map(|i| (0..ny).map(|j| v(j * nx + i)).collect()).collect()
+                };
+                Plastic {
+                    fraction: sol.plastic_fraction,
+                    mask: map(&|k| f64::from(u8::from(sol.plastic[k]))),
+                    displacement: map(&|k| sol.plastic_displacement[k]),
+                }
+            }),
+        }),
     })
 }
 

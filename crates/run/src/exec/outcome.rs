@@ -104,6 +104,10 @@ pub struct ContactOut {
     /// Fraction of a surface's lattice in contact; absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fraction: Option<f64>,
+    /// Under a hardness (`interface.hardness`): the share of the contact cells at the
+    /// hardness; absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_fraction: Option<f64>,
 }
 
 /// `zones` in result.json.
@@ -231,7 +235,32 @@ pub enum SurfaceOut {
         /// peak; docs/load-histories.md); absent otherwise.
         #[serde(skip_serializing_if = "Option::is_none")]
         slip_amplitude: Option<Vec<Vec<f64>>>,
+        /// A surface under a hardness: 1 where the pressure is at the hardness (plastic),
+        /// else 0; absent otherwise.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        plastic: Option<Vec<Vec<f64>>>,
+        /// A surface under a hardness: the plastic displacement (m), the interpenetration
+        /// that plastic flow removes at a plastic cell, 0 elsewhere; absent otherwise.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        plastic_displacement: Option<Vec<Vec<f64>>>,
     },
+}
+
+/// A lattice map `[i][j]`.
+type Map = Vec<Vec<f64>>;
+
+impl SurfaceOut {
+    /// The plastic maps (mask, displacement) of a capped surface, on a lattice's maps.
+    #[must_use]
+    pub(crate) fn with_plastic(mut self, maps: Option<(Map, Map)>) -> Self {
+        if let (SurfaceOut::Grid { plastic, plastic_displacement, .. }, Some((m, w))) =
+            (&mut self, maps)
+        {
+            *plastic = Some(m);
+            *plastic_displacement = Some(w);
+        }
+        self
+    }
 }
 
 /// `field` in result.json: the plane field of a line contact, or the volume field of a 3D

@@ -122,6 +122,7 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
             normal_load: load,
             area: None,
             fraction: None,
+            plastic_fraction: None,
         },
         zones,
         forces: Forces {

@@ -431,6 +431,7 @@ fn contact_recipe(
                 load,
                 tolerance,
                 sweep: l.normal_sweep,
+                hardness: scene.interface.hardness,
             }
         }
     };
@@ -448,6 +449,13 @@ fn contact_recipe(
         && (l.tangential != 0.0 || l.moment != 0.0)
         && !matches!(scene.motion, Motion::RollingCreepage { .. } | Motion::Rolling { .. })
         && method != Method::Lp;
+    if couple && scene.interface.hardness.is_some() {
+        return Err(unsupported(
+            "interface.hardness",
+            format!("a hardness cap between dissimilar bodies (Dundurs beta = {beta:.4}) with a tangential load is not solved in this version (the coupled normal-tangential solve has no cap)"),
+            "remove interface.hardness, or the tangential load, or use bodies of one material",
+        ));
+    }
     if couple && l.normal_sweep.is_some() {
         return Err(unsupported(
             "load.normal",

@@ -330,6 +330,8 @@ pub enum ContactNormal {
         tolerance: f64,
         /// A load sweep up to the force, warm-started step by step.
         sweep: Option<stickslip_scene::NormalSweep>,
+        /// The hardness capping the pressure (`interface.hardness`, Pa), if any.
+        hardness: Option<f64>,
     },
 }
 

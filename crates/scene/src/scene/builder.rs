@@ -56,6 +56,7 @@ impl SceneBuilder {
                 motion: Motion::Static,
                 outputs: Outputs { surface: true, field: None, cycle: None, plots: false },
                 solver: SolverOptions::default(),
+                interface: super::Interface::default(),
                 source: None,
             },
         }

@@ -546,6 +546,16 @@ pub enum Method {
     Polach,
 }
 
+/// The interface between the bodies beyond elastic contact with Coulomb friction
+/// (`[interface]`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Interface {
+    /// The hardness H (Pa): the contact pressure is capped at H (an elastic–perfectly
+    /// plastic interface; cells at H are plastic and their gap closes by plastic flow).
+    /// Solved on a surface lattice only.
+    pub hardness: Option<f64>,
+}
+
 /// Solver options.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverOptions {
@@ -578,6 +588,8 @@ pub struct Scene {
     pub outputs: Outputs,
     /// Solver options.
     pub solver: SolverOptions,
+    /// The interface (`[interface]`; default: elastic, no cap).
+    pub interface: Interface,
     /// The text the scene was read from with the span of each value (None when built in
     /// code); used to locate refusals.
     pub source: Option<std::sync::Arc<Source>>,

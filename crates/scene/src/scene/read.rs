@@ -145,6 +145,15 @@ pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError
     let motion = motion(&cx, &raw)?;
     let outputs = outputs(&cx, raw.outputs.as_ref())?;
     let solver = solver(&cx, raw.solver.as_ref())?;
+    let interface = match &raw.interface {
+        Some(i) => super::Interface {
+            hardness: match &i.hardness {
+                Some(h) => Some(cx.qty(h, "interface.hardness", Dim::STRESS, "hardness")?),
+                None => None,
+            },
+        },
+        None => super::Interface::default(),
+    };
     cx.record("geometry", raw.geometry.span());
     cx.record("substrate", raw.substrate.span());
     cx.record("load", raw.load.span());
@@ -164,6 +173,7 @@ pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError
         motion,
         outputs,
         solver,
+        interface,
         source: Some(Arc::new(Source {
             text: Arc::from(src),
             spans: cx.spans.into_inner(),

@@ -22,7 +22,33 @@ pub(crate) fn validate(scene: &Scene) -> Result<(), Issue> {
     history(scene)?;
     motion(scene)?;
     outputs(&scene.outputs, scene.geometry.is_2d())?;
-    solver(&scene.solver)
+    solver(&scene.solver)?;
+    interface(scene)
+}
+
+/// `[interface]`: a positive hardness, on a surface lattice, without a load history.
+fn interface(scene: &Scene) -> Result<(), Issue> {
+    let Some(h) = scene.interface.hardness else { return Ok(()) };
+    positive("interface.hardness", h, "hardness")?;
+    if !matches!(scene.geometry, Geometry::Surface(_)) {
+        return Err(Issue::new(
+            ErrorKind::Unsupported,
+            "interface.hardness",
+            "a hardness cap is solved on a surface lattice only; this geometry is a closed form",
+        )
+        .hint("give geometry.kind = \"surface\" with the same profile (e.g. [geometry.profile] shape = \"sphere\") to solve it on a lattice, or remove interface.hardness"));
+    }
+    if scene.load.history.is_some() {
+        return Err(Issue::new(
+            ErrorKind::Unsupported,
+            "interface.hardness",
+            "a hardness cap under a load history is not solved in this version",
+        )
+        .hint(
+            "remove [load.history] (one load, or a normal-load sweep) or remove interface.hardness",
+        ));
+    }
+    Ok(())
 }
 
 fn finite(key: &str, v: f64) -> Result<f64, Issue> {

@@ -227,6 +227,9 @@ static SOLVER: Table = Table {
     ],
 };
 
+/// `[interface]`.
+static INTERFACE: Table = Table { fields: &[f("hardness", Kind::Qty("\"2 GPa\""))] };
+
 /// The whole file.
 static TOP: Table = Table {
     fields: &[
@@ -238,11 +241,12 @@ static TOP: Table = Table {
         f("motion", Kind::Table(&MOTION)),
         f("outputs", Kind::Table(&OUTPUTS)),
         f("solver", Kind::Table(&SOLVER)),
+        f("interface", Kind::Table(&INTERFACE)),
     ],
 };
 
 /// Every table of the format with its dotted name, to say where a misplaced key belongs.
-fn tables() -> [(&'static str, &'static Table); 13] {
+fn tables() -> [(&'static str, &'static Table); 14] {
     [
         ("geometry", &GEOMETRY),
         ("geometry.profile", &PROFILE),
@@ -257,6 +261,7 @@ fn tables() -> [(&'static str, &'static Table); 13] {
         ("outputs.field", &FIELD),
         ("outputs.cycle", &CYCLE),
         ("solver", &SOLVER),
+        ("interface", &INTERFACE),
     ]
 }
 
