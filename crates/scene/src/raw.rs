@@ -208,9 +208,9 @@ pub(crate) struct RawPatch {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSubstrate {
-    /// The material model.
-    #[schemars(with = "String")]
-    pub model: Spanned<String>,
+    /// The material model: "homogeneous" (the default), "graded" or "viscoelastic".
+    #[schemars(with = "Option<String>")]
+    pub model: Option<Spanned<String>>,
     /// A named material (docs/materials.md) instead of e and nu: homogeneous and viscoelastic only.
     #[schemars(with = "Option<String>")]
     pub material: Option<Spanned<String>>,
@@ -237,9 +237,11 @@ pub(crate) struct RawSubstrate {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawIndenter {
-    /// Rigid, homogeneous elastic, or the same material as the substrate.
-    #[schemars(with = "String")]
-    pub model: Spanned<String>,
+    /// Rigid, homogeneous elastic, or the same material as the substrate: "rigid",
+    /// "homogeneous" or "same". Left out: "homogeneous" when material, e or nu is given,
+    /// "rigid" otherwise.
+    #[schemars(with = "Option<String>")]
+    pub model: Option<Spanned<String>>,
     /// Homogeneous: a named material (docs/materials.md) instead of e and nu.
     #[schemars(with = "Option<String>")]
     pub material: Option<Spanned<String>>,
@@ -306,9 +308,10 @@ pub(crate) struct RawHistory {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawMotion {
-    /// Static, or steady rolling.
-    #[schemars(with = "String")]
-    pub kind: Spanned<String>,
+    /// "static" or "rolling". Left out: "rolling" when speed, creep or creepage is given,
+    /// "static" otherwise.
+    #[schemars(with = "Option<String>")]
+    pub kind: Option<Spanned<String>>,
     /// Rolling: the speed (length/time, e.g. "10 cm/s").
     #[schemars(with = "Option<Qty>")]
     pub speed: Option<SQty>,
