@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 
 mod builder;
 mod heights;
+pub mod ranges;
 pub(crate) mod read;
 pub(crate) mod validate;
 
