@@ -124,7 +124,7 @@ pub(crate) struct RawProfile {
     /// Ellipsoid: the radii [Rx, Ry] (lengths).
     #[schemars(with = "Option<Vec<Qty>>")]
     pub radii: Option<Spanned<Vec<SQty>>>,
-    /// Punch: the edge radius (length).
+    /// Punch: the edge radius (length); left out or 0, the edge is sharp (Boussinesq).
     #[schemars(with = "Option<Qty>")]
     pub edge_radius: Option<SQty>,
     /// Wavy: the wavelength (length).

@@ -141,7 +141,10 @@ fn surface(s: &super::Surface) -> Result<(), Issue> {
         }
         Profile::Punch { radius, edge_radius } => {
             within("geometry.profile.radius", radius, &ranges::LENGTH)?;
-            within("geometry.profile.edge_radius", edge_radius, &ranges::LENGTH)?;
+            // 0: the sharp-edged punch.
+            if edge_radius != 0.0 {
+                within("geometry.profile.edge_radius", edge_radius, &ranges::LENGTH)?;
+            }
         }
         Profile::Wavy { wavelength, amplitude, .. } => {
             within("geometry.profile.wavelength", wavelength, &ranges::LENGTH)?;
