@@ -268,7 +268,46 @@ def sweep(scene, vary, client=None, shard=None, time_limit=600.0):
     if client is None:
         rows = [s.run_point(p, time_limit) for p in points]
     else:
-        futures = client.map(_point, [text] * len(points), [file] * len(points),
-                             [specs] * len(points), points, [time_limit] * len(points))
-        rows = client.gather(futures)
+        rows = _on_cluster(client, text, file, specs, points, time_limit)
     return _frame(s.columns(), rows)
+
+
+#: How many times a point whose worker died is submitted again before the sweep fails.
+WORKER_RETRIES = 3
+
+
+def _on_cluster(client, text, file, specs, points, time_limit):
+    """The rows of ``points`` run on the cluster of ``client``, in the order of ``points``.
+
+    Each point is one task; its row is kept in the slot of its point as it arrives, so a
+    point appears once whatever happens to the workers. A worker that dies takes its running
+    tasks with it: the scheduler runs them again on the others, and a task it gives up on
+    (``KilledWorker``, after the scheduler's own ``allowed-failures``) is submitted again
+    here, up to ``WORKER_RETRIES`` times. A point is a pure function of the scene text and
+    its index (every solver gives the same bits on every run), so a point run twice gives
+    the same row.
+    """
+    from distributed import as_completed
+    from distributed.scheduler import KilledWorker
+
+    rows = [None] * len(points)
+    owner = {}
+
+    def submit(j, attempt):
+        f = client.submit(_point, text, file, specs, points[j], time_limit, pure=False,
+                          retries=0)
+        owner[f.key] = (j, attempt)
+        return f
+
+    pending = as_completed([submit(j, 0) for j in range(len(points))])
+    for f in pending:
+        j, attempt = owner.pop(f.key)
+        try:
+            rows[j] = f.result()
+        except KilledWorker:
+            if attempt + 1 > WORKER_RETRIES:
+                raise
+            pending.add(submit(j, attempt + 1))
+        finally:
+            f.release()
+    return rows

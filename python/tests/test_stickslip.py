@@ -186,3 +186,58 @@ def test_bad_vary_specs_are_value_errors():
     with pytest.raises(stickslip.SceneError) as e:
         stickslip.sweep(HERTZ, {"load.frction": [0.1]})
     assert e.value.key == "load.frction"
+
+
+SLOW = """[geometry]
+kind = "surface"
+size = ["0.6 mm", "0.6 mm"]
+cells = [256, 256]
+[geometry.profile]
+shape = "sphere"
+radius = "10 mm"
+[substrate]
+material = "steel"
+[indenter]
+model = "same"
+[load]
+normal = "5 N"
+[solver]
+tolerance = 1e-10
+"""
+
+
+def test_a_worker_killed_mid_sweep_costs_no_point_and_repeats_none():
+    """A Dask worker killed (SIGKILL) while the sweep runs: its points run again on the
+    others, and the table is the serial one, each point once."""
+    import os
+    import signal
+    import threading
+    import time
+
+    distributed = pytest.importorskip("distributed")
+    vary = {"load.normal": "1:10:16"}
+    serial = stickslip.sweep(SLOW, vary)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            client.wait_for_workers(2)
+            pids = client.run(os.getpid)
+            victim = sorted(pids.values())[0]
+            killed = {}
+
+            def kill():
+                # Once the sweep is under way (a point takes ~0.1 s or more).
+                time.sleep(0.6)
+                os.kill(victim, signal.SIGKILL)
+                killed["at"] = time.monotonic()
+
+            t0 = time.monotonic()
+            th = threading.Thread(target=kill)
+            th.start()
+            df = stickslip.sweep(SLOW, vary, client=client)
+            end = time.monotonic()
+            th.join()
+    assert "at" in killed and killed["at"] < end, "the worker was not killed mid-sweep"
+    print("sweep %.2f s, worker killed at %.2f s" % (end - t0, killed["at"] - t0))
+    assert list(df["point"]) == list(range(16))
+    pd.testing.assert_frame_equal(df, serial, check_exact=True)

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use stickslip_sweep::{merge, Cell, Shard, Sweep, Table, Vary};
+use stickslip_sweep::{journal_path, merge, write_atomically, Cell, Shard, Sweep, Table, Vary};
 
 use crate::{emit, note, Failure};
 
@@ -35,6 +35,11 @@ pub struct SweepArgs {
     /// a failed row.
     #[arg(long, value_name = "SECONDS", default_value_t = stickslip_run::DEFAULT_TIME_LIMIT_SECONDS, value_parser = crate::positive_seconds)]
     time_limit: f64,
+    /// Continue a sweep that was killed: read the rows of the points it finished from its
+    /// partial table (sweep.partial.csv, or sweep-IofN.partial.csv, in --out) and run only
+    /// the others. Without it a sweep starts from its first point.
+    #[arg(long)]
+    resume: bool,
 }
 
 /// `stickslip merge`.
@@ -59,10 +64,16 @@ fn write(table: &Table, dir: &Path, stem: &str) -> Result<[PathBuf; 2], Failure>
     })?;
     let csv = dir.join(format!("{stem}.csv"));
     let parquet = dir.join(format!("{stem}.parquet"));
-    let text = table.to_csv().map_err(|e| Failure::Other(e.to_string(), 1))?;
-    std::fs::write(&csv, text)
-        .map_err(|e| Failure::Other(format!("cannot write {}: {e}", csv.display()), 1))?;
-    table.write_parquet(&parquet).map_err(|e| Failure::Other(e.to_string(), 1))?;
+    let fail = |e: stickslip_sweep::TableError| Failure::Other(e.to_string(), 1);
+    let text = table.to_csv().map_err(fail)?;
+    // Each file all or nothing: written beside, flushed, renamed over.
+    write_atomically(&csv, text.as_bytes()).map_err(fail)?;
+    let tmp = dir.join(format!("{stem}.parquet.tmp"));
+    table.write_parquet(&tmp).map_err(fail)?;
+    let io =
+        |e: std::io::Error| Failure::Other(format!("cannot write {}: {e}", parquet.display()), 1);
+    std::fs::File::open(&tmp).and_then(|f| f.sync_all()).map_err(io)?;
+    std::fs::rename(&tmp, &parquet).map_err(io)?;
     Ok([csv, parquet])
 }
 
@@ -104,21 +115,52 @@ pub fn cmd_sweep(a: &SweepArgs) -> Result<(), Failure> {
         }
         b
     });
-    let table = sweep.run(shard, a.time_limit, |_| {
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    });
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
     let stem = if shard == Shard::ALL {
         "sweep".to_string()
     } else {
         format!("sweep-{}of{}", shard.index, shard.count)
     };
+    std::fs::create_dir_all(&a.out).map_err(|e| {
+        Failure::Other(format!("cannot create the directory {}: {e}", a.out.display()), 1)
+    })?;
+    let journal = journal_path(&a.out, &stem);
+    if a.resume && !journal.exists() {
+        return Err(Failure::Other(
+            format!(
+                "--resume: no partial table {} to continue from\n  hint: run the sweep without --resume (it starts from its first point)",
+                journal.display()
+            ),
+            2,
+        ));
+    }
+    let run = sweep
+        .run_journaled(shard, a.time_limit, &journal, a.resume, |_| {
+            if let Some(b) = &bar {
+                b.inc(1);
+            }
+        })
+        .map_err(|e| {
+            let code = if a.resume { 2 } else { 1 };
+            Failure::Other(
+                format!("{e}\n  hint: run without --resume to start the sweep again"),
+                code,
+            )
+        })?;
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let table = run.table;
     let files = write(&table, &a.out, &stem)?;
-    emit(&summary(&table, &files))
+    // The table is whole: the journal has served.
+    let _ = std::fs::remove_file(&journal);
+    let mut text = summary(&table, &files);
+    if a.resume {
+        text = format!(
+            "resumed: {} points read from the partial table, {} solved now\n{text}",
+            run.resumed, run.solved
+        );
+    }
+    emit(&text)
 }
 
 /// The shard tables named by `paths`: files as given, directories searched for

@@ -87,3 +87,109 @@ fn bad_specs_exit_2_with_the_reason() {
         assert!(!d.exists(), "{args:?} wrote output");
     }
 }
+
+/// A sweep killed mid-way and continued with `--resume` gives the table of an
+/// uninterrupted run, byte for byte: the points it finished are read from its partial table
+/// (appended and flushed as each point finished), only the others are solved, and a torn
+/// last record (a kill during a write) is dropped and its point solved again.
+#[test]
+fn a_killed_sweep_resumes_without_solving_a_point_twice_or_losing_one() {
+    let d = tmp("resume");
+    std::fs::create_dir_all(&d).unwrap();
+    // Points slow enough to kill the sweep between them (a 256 x 256 surface each).
+    let scene = d.join("slow.toml");
+    std::fs::write(
+        &scene,
+        "[geometry]\nkind = \"surface\"\nsize = [\"0.6 mm\", \"0.6 mm\"]\ncells = [256, 256]\n[geometry.profile]\nshape = \"sphere\"\nradius = \"10 mm\"\n[substrate]\nmaterial = \"steel\"\n[indenter]\nmodel = \"same\"\n[load]\nnormal = \"5 N\"\n[solver]\ntolerance = 1e-10\n",
+    )
+    .unwrap();
+    let vary = ["--vary", "load.normal=1:10:16"];
+    let whole = bin()
+        .arg("sweep")
+        .arg(&scene)
+        .args(vary)
+        .arg("--out")
+        .arg(d.join("whole"))
+        .output()
+        .unwrap();
+    assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
+
+    let out = d.join("killed");
+    let journal = out.join("sweep.partial.csv");
+    let mut child =
+        bin().arg("sweep").arg(&scene).args(vary).arg("--out").arg(&out).spawn().unwrap();
+    // Kill it once two points are in the partial table (and before it ends).
+    let rows = |p: &Path| {
+        std::fs::read_to_string(p).map_or(0, |t| {
+            t.lines().filter(|l| l.starts_with(|c: char| c.is_ascii_digit())).count()
+        })
+    };
+    let t0 = std::time::Instant::now();
+    while rows(&journal) < 2 {
+        assert!(t0.elapsed().as_secs() < 120, "no rows in the partial table");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.kill().unwrap();
+    let status = child.wait().unwrap();
+    let done_before = rows(&journal);
+    assert!(!out.join("sweep.csv").exists(), "a killed sweep left a table");
+    if status.success() {
+        // The sweep ended before the kill: nothing to resume; the test proves nothing.
+        panic!("the sweep finished before it was killed ({done_before} rows); use slower points");
+    }
+    assert!(done_before < 16, "{done_before}");
+    // A torn record, as a kill during a write leaves it.
+    let mut f = std::fs::OpenOptions::new().append(true).open(&journal).unwrap();
+    std::io::Write::write_all(&mut f, b"15,abc,16,9.").unwrap();
+    drop(f);
+
+    let o = bin()
+        .arg("sweep")
+        .arg(&scene)
+        .args(vary)
+        .arg("--out")
+        .arg(&out)
+        .arg("--resume")
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    let text = format!("{}{err}", String::from_utf8_lossy(&o.stdout));
+    assert!(o.status.success(), "{text}");
+    println!("{text}");
+    let want = format!(
+        "resumed: {done_before} points read from the partial table, {} solved now",
+        16 - done_before
+    );
+    assert!(text.contains(&want), "{text}\nexpected: {want}");
+    for f in ["sweep.csv", "sweep.parquet"] {
+        assert_eq!(
+            std::fs::read(out.join(f)).unwrap(),
+            std::fs::read(d.join("whole").join(f)).unwrap(),
+            "{f} differs from the uninterrupted sweep"
+        );
+    }
+    assert!(!journal.exists(), "the partial table outlived the finished table");
+    // --resume without a partial table, or with another sweep's, is refused (exit 2).
+    let o = bin()
+        .arg("sweep")
+        .arg(&scene)
+        .args(vary)
+        .arg("--out")
+        .arg(&out)
+        .arg("--resume")
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    std::fs::write(&journal, "point,sweep\n").unwrap();
+    let o = bin()
+        .arg("sweep")
+        .arg(&scene)
+        .args(vary)
+        .arg("--out")
+        .arg(&out)
+        .arg("--resume")
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -468,3 +468,66 @@ fn dissimilar_bodies_on_a_periodic_surface_are_solved_coupled() {
     assert!((out.forces.tangential - 1.0).abs() < 1e-6, "{}", out.forces.tangential);
     assert!((out.forces.normal - 10.0).abs() < 1e-6, "{}", out.forces.normal);
 }
+
+/// The sharp-edged flat punch (`edge_radius` left out, or 0) pressed by an approach d,
+/// against Boussinesq: F = 2 a E* d and p(r) = E* d / (pi sqrt(a^2 - r^2)). The face on
+/// the square lattice is the set of cells whose centres lie within the radius; the closed
+/// form is evaluated at the radius of the circle of the same area (counted here, from the
+/// lattice), and the error of the discretised face is first order in the cell size, so a
+/// refinement halves it. The peak pressure is the edge singularity's and grows as the cells
+/// shrink; the result says so.
+#[test]
+fn the_sharp_punch_follows_boussinesq_within_half_a_percent_at_256_cells_across() {
+    let (radius, d) = (0.5e-3, 1e-7);
+    let punch = |cells: usize, edge: &str| {
+        // The lattice is 1.25 face diameters wide: `cells` across it, 0.8 cells across the face.
+        let size = 2.5 * radius;
+        let src = format!(
+            "[geometry]\nkind = \"surface\"\nsize = [{size:e}, {size:e}]\ncells = [{cells}, {cells}]\n[geometry.profile]\nshape = \"punch\"\nradius = {radius:e}\n{edge}\n[substrate]\ne = \"210 GPa\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\napproach = {d:e}\n[solver]\ntolerance = 1e-10\n"
+        );
+        let out = run(&Scene::from_toml_str(&src, None).unwrap(), &RunOptions::default()).unwrap();
+        // The face cells, counted from the lattice.
+        let h = size / cells as f64;
+        let mut face = 0usize;
+        for j in 0..cells {
+            for i in 0..cells {
+                let (x, y) = ((i as f64 + 0.5) * h - 0.5 * size, (j as f64 + 0.5) * h - 0.5 * size);
+                if x.hypot(y) <= radius {
+                    face += 1;
+                }
+            }
+        }
+        let a = (face as f64 * h * h / PI).sqrt();
+        let exact = 2.0 * a * e_star() * d;
+        let err = (out.contact.normal_load - exact) / exact;
+        (out, err, a)
+    };
+    let (out, err256, a) = punch(320, "");
+    let p = out.punch.as_ref().expect("the sharp punch reports its check");
+    println!(
+        "256 across: F = {:.6e} N, Boussinesq at a_eq = {a:.6e} m: {:.6e} N, error {err256:+.3e}; at the written radius {:+.3e}; interior pressure {:.2e}; p0 {:.4e} Pa",
+        out.contact.normal_load,
+        2.0 * a * e_star() * d,
+        (out.contact.normal_load - 2.0 * radius * e_star() * d) / (2.0 * radius * e_star() * d),
+        p.interior_pressure_error,
+        out.contact.p0
+    );
+    assert!(err256.abs() <= 5e-3, "force error {err256:e} at 256 cells across");
+    assert!((p.force_error - err256).abs() <= 1e-12, "{} vs {err256}", p.force_error);
+    assert_eq!(p.cells_across, 256.0);
+    assert!(p.peak_pressure_grid_dependent);
+    assert!(out.notes.iter().any(|n| n.contains("singular at the edge")), "{:?}", out.notes);
+    // Away from the edge (r <= a/2) the pressure is Boussinesq's.
+    assert!(p.interior_pressure_error <= 5e-3, "interior pressure {:e}", p.interior_pressure_error);
+    // edge_radius = 0 is the same punch as leaving it out.
+    let (zero, err0, _) = punch(320, "edge_radius = 0");
+    assert_eq!(zero.contact.normal_load, out.contact.normal_load);
+    assert_eq!(err0, err256);
+    // First order: half the cells, about twice the error; the edge peak is lower on the
+    // coarser lattice (p ~ 1/sqrt(h): about 1/sqrt(2)).
+    let (coarse, err128, _) = punch(160, "");
+    println!("128 across: error {err128:+.3e}, p0 {:.4e} Pa", coarse.contact.p0);
+    assert!(err128.abs() > 1.5 * err256.abs() && err128.abs() < 2.5 * err256.abs());
+    let peak = out.contact.p0 / coarse.contact.p0;
+    assert!((peak - 2f64.sqrt()).abs() < 0.1, "peak pressure ratio {peak}");
+}

@@ -61,6 +61,7 @@ pub mod templates;
 pub mod units;
 
 pub use error::{Check, ErrorKind, Issue, SceneError};
+pub use scene::ranges;
 pub use scene::{
     patch_bounds, Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, History,
     HistoryControl, Indenter, Interface, Load, Method, Motion, NormalLoad, NormalSweep, Outputs,

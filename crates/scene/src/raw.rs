@@ -135,7 +135,7 @@ pub(crate) struct RawProfile {
     /// Ellipsoid: the radii [Rx, Ry] (lengths).
     #[schemars(with = "Option<Vec<Qty>>")]
     pub radii: Option<Spanned<Vec<SQty>>>,
-    /// Punch: the edge radius (length).
+    /// Punch: the edge radius (length); left out or 0, the edge is sharp (Boussinesq).
     #[schemars(with = "Option<Qty>")]
     pub edge_radius: Option<SQty>,
     /// Wavy: the wavelength (length).
@@ -219,9 +219,9 @@ pub(crate) struct RawPatch {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSubstrate {
-    /// The material model.
-    #[schemars(with = "String")]
-    pub model: Spanned<String>,
+    /// The material model: "homogeneous" (the default), "graded" or "viscoelastic".
+    #[schemars(with = "Option<String>")]
+    pub model: Option<Spanned<String>>,
     /// A named material (docs/materials.md) instead of e and nu: homogeneous and viscoelastic only.
     #[schemars(with = "Option<String>")]
     pub material: Option<Spanned<String>>,
@@ -248,9 +248,11 @@ pub(crate) struct RawSubstrate {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawIndenter {
-    /// Rigid, homogeneous elastic, or the same material as the substrate.
-    #[schemars(with = "String")]
-    pub model: Spanned<String>,
+    /// Rigid, homogeneous elastic, or the same material as the substrate: "rigid",
+    /// "homogeneous" or "same". Left out: "homogeneous" when material, e or nu is given,
+    /// "rigid" otherwise.
+    #[schemars(with = "Option<String>")]
+    pub model: Option<Spanned<String>>,
     /// Homogeneous: a named material (docs/materials.md) instead of e and nu.
     #[schemars(with = "Option<String>")]
     pub material: Option<Spanned<String>>,
@@ -343,9 +345,10 @@ pub(crate) struct RawHistoryUnits {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawMotion {
-    /// Static, or steady rolling.
-    #[schemars(with = "String")]
-    pub kind: Spanned<String>,
+    /// "static" or "rolling". Left out: "rolling" when speed, creep or creepage is given,
+    /// "static" otherwise.
+    #[schemars(with = "Option<String>")]
+    pub kind: Option<Spanned<String>>,
     /// Rolling: the speed (length/time, e.g. "10 cm/s").
     #[schemars(with = "Option<Qty>")]
     pub speed: Option<SQty>,

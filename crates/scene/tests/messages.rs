@@ -104,11 +104,51 @@ fn cases() -> Vec<(&'static str, String, &'static str, usize, &'static str)> {
         ("patch centre of booleans", PATCHES.replacen("centre = [0.0, 0.0]", "centre = [true, 0.0]", 1), "geometry.patches[0].centre", 3, "value 1 of the array"),
         ("patch unknown key", PATCHES.replacen("side = \"1 in\"", "size = \"1 in\"", 1), "geometry.patches[0].size", 3, "unknown key `size`"),
         ("patch missing pressure", PATCHES.replacen(", pressure = \"10000 psi\"", "", 1), "geometry.patches[0].pressure", 3, "missing key `pressure`"),
+        ("graded key without model", sub("model = \"homogeneous\"\n", "").replacen("nu = 0.3", "nu = 0.3\nk = 0.5", 1), "substrate.model", 8, "`k` belongs to a graded substrate"),
+        ("viscoelastic key without model", sub("model = \"homogeneous\"\n", "").replacen("nu = 0.3", "nu = 0.3\nalpha = \"2 s\"", 1), "substrate.model", 8, "`alpha` belongs to a viscoelastic substrate"),
+        ("graded key, homogeneous", sub("nu = 0.3", "nu = 0.3\ne0 = 1e9"), "substrate.e0", 9, "`e0` is not a key of a homogeneous substrate"),
+        ("viscoelastic key, graded", sub("model = \"homogeneous\"\ne = \"210 GPa\"", "model = \"graded\"\ne0 = 1e9\nk = 0.5\nbeta = 1"), "substrate.beta", 9, "`beta` is not a key of a graded substrate"),
+        ("modulus of a same indenter", sub("model = \"same\"", "model = \"same\"\ne = \"1 GPa\""), "indenter.e", 11, "a same indenter takes no `e`"),
+        ("speed of a static contact", format!("{GOOD}[motion]\nkind = \"static\"\nspeed = \"1 m/s\"\n"), "motion.speed", 25, "a static contact takes no `speed`"),
         ("syntax: unquoted string", sub("model = \"homogeneous\"", "model = homogeneous"), "substrate.model", 6, ""),
         ("syntax: missing value", sub("nu = 0.3", "nu = "), "substrate.nu", 8, ""),
         ("syntax: duplicate key", sub("nu = 0.3", "nu = 0.3\nnu = 0.2"), "substrate.nu", 9, ""),
         ("syntax: unclosed header", sub("[load]", "[load"), "load", 11, ""),
     ]
+}
+
+/// Keys with one sensible value may be left out: `substrate.model` is homogeneous when the
+/// body is given by a material or e and nu, `indenter.model` homogeneous when it has elastic
+/// constants and rigid otherwise, `motion.kind` rolling when a speed is given.
+#[test]
+fn obvious_defaults_read_as_written_out() {
+    let explicit = parse(GOOD).unwrap();
+    let short = parse(&sub("model = \"homogeneous\"\n", "")).unwrap();
+    assert_eq!(short.substrate, explicit.substrate);
+    let named = |sub_keys: &str, ind_keys: &str| {
+        format!(
+            "[geometry]\nkind = \"sphere\"\nradius = \"5 mm\"\n[substrate]\n{sub_keys}\n[indenter]\n{ind_keys}\n[load]\nnormal = \"10 N\"\n"
+        )
+    };
+    let a = parse(&named("material = \"steel\"", "material = \"steel\"")).unwrap();
+    let b = parse(&named(
+        "model = \"homogeneous\"\nmaterial = \"steel\"",
+        "model = \"homogeneous\"\nmaterial = \"steel\"",
+    ))
+    .unwrap();
+    assert_eq!(a.substrate, b.substrate);
+    assert_eq!(a.indenter, b.indenter);
+    assert!(matches!(a.indenter, stickslip_scene::Indenter::Homogeneous(_)));
+    let c = parse(&named("e = \"70 GPa\"\nnu = 0.33", "e = \"210 GPa\"\nnu = 0.3")).unwrap();
+    assert!(matches!(c.substrate, stickslip_scene::Substrate::Homogeneous(_)));
+    assert!(matches!(c.indenter, stickslip_scene::Indenter::Homogeneous(_)));
+    let empty = parse(&named("material = \"steel\"", "")).unwrap();
+    assert_eq!(empty.indenter, stickslip_scene::Indenter::Rigid);
+    let rolling = "[geometry]\nkind = \"cylinder\"\nradius = \"0.46 m\"\n[substrate]\nmaterial = \"steel\"\n[indenter]\nmodel = \"same\"\n[load]\nnormal = \"500 kN/m\"\nfriction = 0.3\n[motion]\nspeed = \"20 m/s\"\ncreep = 0.0005\n";
+    let r = parse(rolling).unwrap();
+    let r2 = parse(&rolling.replace("[motion]\n", "[motion]\nkind = \"rolling\"\n")).unwrap();
+    assert_eq!(r.motion, r2.motion);
+    assert!(matches!(r.motion, stickslip_scene::Motion::Rolling { .. }), "{:?}", r.motion);
 }
 
 #[test]

@@ -29,6 +29,7 @@
 // SceneError carries file, position, key and hint for the user; one per point.
 #![allow(clippy::result_large_err)]
 
+mod journal;
 mod table;
 mod vary;
 
@@ -38,6 +39,7 @@ use std::path::PathBuf;
 
 use rayon::prelude::*;
 
+pub use journal::{journal_path, write_atomically, Journaled};
 pub use table::{format_f64, Cell, Kind, Table, TableError};
 pub use vary::{Vary, VaryError, VaryValue};
 
@@ -339,28 +341,40 @@ impl Sweep {
     /// threads, so the table is [`Sweep::run_serial`]'s, in the same order.
     pub fn run(&self, shard: Shard, time_limit: f64, done: impl Fn(usize) + Sync) -> Table {
         let points: Vec<usize> = shard.points(self.len()).collect();
-        let at_once = self.concurrency(&points);
-        let run = |points: &[usize]| -> Vec<Vec<Cell>> {
-            points
-                .par_iter()
-                .map(|&i| {
-                    let r = self.run_point(i, time_limit);
-                    done(i);
-                    r
-                })
-                .collect()
+        let rows = self.run_points(&points, time_limit, |i, _| done(i));
+        Table { columns: self.columns(), rows }
+    }
+
+    /// Run `points` as [`Sweep::run`] does (in parallel, as the threads and the memory
+    /// allow); their rows in the order of `points`. `done` gets each point's row as it
+    /// finishes, from the thread that ran it.
+    pub(crate) fn run_points(
+        &self,
+        points: &[usize],
+        time_limit: f64,
+        done: impl Fn(usize, &[Cell]) + Sync,
+    ) -> Vec<Vec<Cell>> {
+        let one = |i: usize| {
+            let r = self.run_point(i, time_limit);
+            done(i, &r);
+            r
         };
-        let rows = if at_once >= rayon::current_num_threads() {
-            run(&points)
+        let serial = || points.iter().map(|&i| one(i)).collect();
+        if points.is_empty() {
+            return Vec::new();
+        }
+        let at_once = self.concurrency(points);
+        let run = || -> Vec<Vec<Cell>> { points.par_iter().map(|&i| one(i)).collect() };
+        if at_once >= rayon::current_num_threads() {
+            run()
         } else if at_once <= 1 {
-            return self.run_serial(shard, time_limit, done);
+            serial()
         } else {
             match rayon::ThreadPoolBuilder::new().num_threads(at_once).build() {
-                Ok(pool) => pool.install(|| run(&points)),
-                Err(_) => return self.run_serial(shard, time_limit, done),
+                Ok(pool) => pool.install(run),
+                Err(_) => serial(),
             }
-        };
-        Table { columns: self.columns(), rows }
+        }
     }
 
     /// Run the points of `shard` one after the other; `done` is called after each point.

@@ -68,6 +68,8 @@ pub(crate) struct Ctx<'a> {
     pub coupling: Option<outcome::CouplingOut>,
     /// The normal solver of a surface, when it ran.
     pub normal: Option<outcome::NormalSolverOut>,
+    /// The sharp punch's check against Boussinesq, when the surface is one.
+    pub punch: Option<outcome::PunchOut>,
 }
 
 impl Ctx<'_> {
@@ -184,6 +186,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         sampling: None,
         coupling: None,
         normal: None,
+        punch: None,
     };
     let parts = match &plan.recipe {
         Recipe::Line(r) => line(r, &mut cx),
@@ -232,6 +235,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         cycle: parts.cycle,
         history: parts.history,
         load_curve: parts.load_curve,
+        punch: cx.punch.take(),
         audit: Default::default(),
         evaluations: cx.ev,
         notes: std::mem::take(&mut cx.notes),

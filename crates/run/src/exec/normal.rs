@@ -281,6 +281,11 @@ fn surface_contact(
     cx.progress("normal contact", steps.len(), steps.len());
     let Some(sol) = sol else { return Err(solver_err("normal-contact solver", "no load step")) };
     let out = surface_solution(s, &sol, tolerance, curve, cx)?;
+    if let stickslip_scene::Profile::Punch { radius, edge_radius } = s.profile {
+        if edge_radius == 0.0 && s.roughness.is_none() {
+            sharp_punch(s, radius, &sol, r.bodies.e_star, cx);
+        }
+    }
     // The record of the last step, with the time and the count of all of them.
     if let Some(n) = cx.normal.as_mut() {
         cx.solve_seconds += seconds - n.solve_seconds;
@@ -305,6 +310,63 @@ pub(crate) fn surface_gap(s: &stickslip_scene::Surface) -> Vec<f64> {
         }
     }
     gap
+}
+
+/// The sharp punch against Boussinesq (`PunchOut`): the force at the area-equivalent radius
+/// of the face cells, the pressure away from the edge, and a note that the peak pressure
+/// is the edge singularity's.
+fn sharp_punch(
+    s: &stickslip_scene::Surface,
+    radius: f64,
+    sol: &stickslip_normal::NormalSolution,
+    e_star: f64,
+    cx: &mut Ctx<'_>,
+) {
+    let [nx, ny] = s.cells;
+    let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
+    let (x0, y0) = (-0.5 * s.size[0], -0.5 * s.size[1]);
+    let centre = |k: usize| {
+        let (i, j) = (k % nx, k / nx);
+        (x0 + (i as f64 + 0.5) * hx, y0 + (j as f64 + 0.5) * hy)
+    };
+    let face: Vec<usize> = (0..nx * ny)
+        .filter(|&k| {
+            let (x, y) = centre(k);
+            x.hypot(y) <= radius
+        })
+        .collect();
+    let a = (face.len() as f64 * hx * hy / PI).sqrt();
+    let d = sol.approach;
+    let force = 2.0 * a * e_star * d;
+    let mut interior = 0.0f64;
+    for &k in &face {
+        let (x, y) = centre(k);
+        let r = x.hypot(y);
+        if r <= 0.5 * a {
+            let exact = e_star * d / (PI * (a * a - r * r).sqrt());
+            interior = interior.max((sol.pressure[k] - exact).abs() / exact);
+        }
+    }
+    let out = super::outcome::PunchOut {
+        face_cells: face.len(),
+        radius,
+        equivalent_radius: a,
+        cells_across: 2.0 * radius / hx,
+        boussinesq_force: force,
+        force_error: (sol.force - force) / force,
+        interior_pressure_error: interior,
+        peak_pressure_grid_dependent: true,
+    };
+    cx.notes.push(format!(
+        "sharp-edged flat punch: the pressure is singular at the edge, p ~ 1/sqrt(a^2 - r^2) (Boussinesq), so the peak pressure {:.4e} Pa is that of the edge cells and grows as the cells shrink: it depends on the lattice, not on the contact. Against Boussinesq at the area-equivalent radius a = {:.6e} m ({} face cells, {:.0} cells across): force {:+.3e} relative, pressure within r <= a/2 {:.3e} relative (see `punch` in result.json)",
+        sol.peak_pressure,
+        a,
+        out.face_cells,
+        out.cells_across,
+        out.force_error,
+        out.interior_pressure_error
+    ));
+    cx.punch = Some(out);
 }
 
 /// The stage-1 solution of a surface from the normal solver's answer: refusal of no contact,

@@ -501,6 +501,36 @@ pub struct RollingOut {
     pub response: &'static str,
 }
 
+/// `punch` in result.json: a surface pressed by the sharp-edged flat punch
+/// (`[geometry.profile] shape = "punch"` without `edge_radius`), checked against
+/// Boussinesq's closed form $F = 2aE^*\delta$, $p(r) = E^*\delta/(\pi\sqrt{a^2-r^2})$.
+///
+/// The face is the set of cells whose centres lie on it; `equivalent_radius` is the radius
+/// of the circle of the same area, the radius the closed form is evaluated with. The edge
+/// pressure is singular, so the lattice's peak pressure (`contact.p0`) belongs to the edge
+/// cells and grows as they shrink: it is reported as grid-dependent, not as a property of
+/// the contact.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PunchOut {
+    /// Cells whose centres lie on the face.
+    pub face_cells: usize,
+    /// Radius of the face as written (m).
+    pub radius: f64,
+    /// Radius of the circle with the area of the face cells (m).
+    pub equivalent_radius: f64,
+    /// Cells across the face diameter along x.
+    pub cells_across: f64,
+    /// Boussinesq's force $2 a E^* \delta$ at the equivalent radius and the approach (N).
+    pub boussinesq_force: f64,
+    /// (lattice force − Boussinesq's) / Boussinesq's.
+    pub force_error: f64,
+    /// The largest |p − p_Boussinesq(r)| / p_Boussinesq(r) over the cells with
+    /// $r \le a/2$, away from the edge singularity.
+    pub interior_pressure_error: f64,
+    /// Always true: the peak pressure is that of the edge cells, p ~ 1/sqrt(a² − r²).
+    pub peak_pressure_grid_dependent: bool,
+}
+
 /// `load_curve` in result.json: one entry per step of a surface's load sweep.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LoadCurve {
@@ -627,6 +657,9 @@ pub struct Outcome {
     /// A surface's load sweep: the area-load and approach-load curves.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_curve: Option<LoadCurve>,
+    /// The sharp-edged flat punch on a surface, checked against Boussinesq.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub punch: Option<PunchOut>,
     /// The checks the result passed before it was written.
     pub audit: Audit,
     /// Evaluations per effect.

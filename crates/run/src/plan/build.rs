@@ -32,6 +32,7 @@ use stickslip_scene::{
 pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
     checks::refuse(scene)?;
     let bodies = bodies::resolve(scene)?;
+    checks::magnitudes(scene, &bodies)?;
     let mut notes = Vec::new();
     let visco = visco(scene);
     let rolling = matches!(scene.motion, Motion::Rolling { .. });

@@ -545,3 +545,153 @@ pub(crate) fn along_axis(deg: f64) -> bool {
     let r = deg.rem_euclid(90.0);
     r.min(90.0 - r) < 1e-9
 }
+
+/// The dimensionless size of the contact, refused outside the range where a half-space
+/// contact in f64 is meaningful (`stickslip_scene::ranges`): the Hertz contact size over
+/// the radius of curvature, $a/R$, for curved bodies, and the mean pressure over the
+/// composite modulus, $\bar p/E^*$, for flat ones. Each scale is the closed form of the
+/// geometry (for a surface, that of its smooth profile), so it is known before solving.
+pub(crate) fn magnitudes(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
+    use stickslip_scene::ranges::{CONTACT_OVER_RADIUS, PRESSURE_OVER_MODULUS};
+    use stickslip_scene::{Ellipse, Profile};
+    let es = bodies.e_star;
+    let load_key = match scene.load.normal {
+        _ if matches!(scene.geometry, Geometry::Patches(_)) => "geometry.patches",
+        NormalLoad::HalfWidth(_) => "load.half_width",
+        NormalLoad::Approach(_) => "load.approach",
+        _ => "load.normal",
+    };
+    let sphere_a = |p: f64, r: f64| (3.0 * p * r / (4.0 * es)).cbrt();
+    let line_a = |p: f64, r: f64| (4.0 * p * r / (std::f64::consts::PI * es)).sqrt();
+    // (a/R, R) or (p/E*, the length it is the pressure of): None when neither applies.
+    enum Measure {
+        Curved { ratio: f64, what: String },
+        Flat { ratio: f64, what: String },
+    }
+    let m = match (&scene.geometry, scene.load.normal) {
+        (Geometry::Cylinder { radius }, NormalLoad::HalfWidth(a)) => {
+            Some(Measure::Curved { ratio: a / radius, what: format!("a/R with R = {radius:e} m") })
+        }
+        (Geometry::Cylinder { radius }, NormalLoad::Force(p)) => {
+            let a = match bodies.graded {
+                Some(g) => stickslip_graded::half_width_from_load(&g, *radius, p)
+                    .map_err(|e| invalid("load.normal", e))?,
+                None => line_a(p, *radius),
+            };
+            Some(Measure::Curved { ratio: a / radius, what: format!("a/R with R = {radius:e} m") })
+        }
+        (Geometry::Sphere { radius }, NormalLoad::HalfWidth(a)) => {
+            Some(Measure::Curved { ratio: a / radius, what: format!("a/R with R = {radius:e} m") })
+        }
+        (Geometry::Sphere { radius }, NormalLoad::Force(p)) => Some(Measure::Curved {
+            ratio: sphere_a(p, *radius) / radius,
+            what: format!("a/R with R = {radius:e} m"),
+        }),
+        (Geometry::Ellipsoid(Ellipse::Radii { rx, ry }), NormalLoad::Force(p)) => {
+            let re = (rx * ry).sqrt();
+            Some(Measure::Curved {
+                ratio: sphere_a(p, re) / rx.min(*ry),
+                what: format!(
+                    "a/R with a the equivalent sphere's and R = min(Rx, Ry) = {:e} m",
+                    rx.min(*ry)
+                ),
+            })
+        }
+        (Geometry::Ellipsoid(Ellipse::SemiAxes { a, b }), NormalLoad::Force(p)) => {
+            Some(Measure::Flat {
+                ratio: p / (std::f64::consts::PI * a * b) / es,
+                what: "P/(pi a b E*)".to_string(),
+            })
+        }
+        (Geometry::Punch { half_width }, NormalLoad::Force(p)) => Some(Measure::Flat {
+            ratio: p / (2.0 * half_width) / es,
+            what: "P/(2 b E*)".to_string(),
+        }),
+        (Geometry::Patches(ps), _) => {
+            let p = ps.iter().map(|q| q.pressure).fold(0.0, f64::max);
+            Some(Measure::Flat {
+                ratio: p / es,
+                what: "the largest patch pressure over E*".to_string(),
+            })
+        }
+        (Geometry::Surface(s), n) => {
+            let area = s.size[0] * s.size[1];
+            let side = s.size[0].min(s.size[1]);
+            match (s.profile, n) {
+                (Profile::Sphere { radius }, NormalLoad::Force(p)) => Some(Measure::Curved {
+                    ratio: sphere_a(p, radius) / radius,
+                    what: format!("a/R with R = {radius:e} m"),
+                }),
+                (Profile::Sphere { radius }, NormalLoad::Approach(d)) => Some(Measure::Curved {
+                    ratio: (radius * d).sqrt() / radius,
+                    what: format!("a/R = sqrt(d/R) with R = {radius:e} m"),
+                }),
+                (Profile::Ellipsoid { radii }, NormalLoad::Force(p)) => {
+                    let r = radii[0].min(radii[1]);
+                    Some(Measure::Curved {
+                        ratio: sphere_a(p, (radii[0] * radii[1]).sqrt()) / r,
+                        what: format!("a/R with R = min(radii) = {r:e} m"),
+                    })
+                }
+                (Profile::Ellipsoid { radii }, NormalLoad::Approach(d)) => {
+                    let r = radii[0].min(radii[1]);
+                    Some(Measure::Curved {
+                        ratio: (d / r).sqrt(),
+                        what: format!("a/R = sqrt(d/R) with R = min(radii) = {r:e} m"),
+                    })
+                }
+                (Profile::Cylinder { radius, length, .. }, NormalLoad::Force(p)) => {
+                    Some(Measure::Curved {
+                        ratio: line_a(p / length, radius) / radius,
+                        what: format!("a/R with R = {radius:e} m (load per roller length)"),
+                    })
+                }
+                (Profile::Punch { radius, .. }, NormalLoad::Force(p)) => Some(Measure::Flat {
+                    ratio: p / (std::f64::consts::PI * radius * radius) / es,
+                    what: "P/(pi a^2 E*)".to_string(),
+                }),
+                // Boussinesq: the mean pressure of a punch pressed by d is 2 E* d/(pi a).
+                (Profile::Punch { radius, .. }, NormalLoad::Approach(d)) => Some(Measure::Flat {
+                    ratio: 2.0 * d / (std::f64::consts::PI * radius),
+                    what: "2 d/(pi a), the mean pressure over E* (Boussinesq)".to_string(),
+                }),
+                (_, NormalLoad::Force(p)) => Some(Measure::Flat {
+                    ratio: p / area / es,
+                    what: "the load over the lattice area over E*".to_string(),
+                }),
+                (_, NormalLoad::Approach(d)) => Some(Measure::Flat {
+                    ratio: d / side,
+                    what: "the approach over the lattice side".to_string(),
+                }),
+                _ => None,
+            }
+        }
+        _ => None,
+    };
+    let (ratio, what, (lo, hi), why) = match m {
+        None => return Ok(()),
+        Some(Measure::Curved { ratio, what }) => (
+            ratio,
+            what,
+            CONTACT_OVER_RADIUS,
+            "above 0.3 the contact is not a small-strain Hertz contact (the parabolic gap errs by over 2 % at its edge); below 1e-6 the indentation is under 1e-12 of the radius, beyond the digits of double precision",
+        ),
+        Some(Measure::Flat { ratio, what }) => (
+            ratio,
+            what,
+            PRESSURE_OVER_MODULUS,
+            "above 0.1 the strains are beyond linear elasticity; below 1e-12 the surface displacements are beyond the digits of double precision relative to the contact size",
+        ),
+    };
+    if ratio.is_finite() && (lo..=hi).contains(&ratio) {
+        return Ok(());
+    }
+    Err(issue(
+        ErrorKind::OutOfRange,
+        load_key,
+        format!(
+            "the contact's dimensionless size {what} is {ratio:.3e}, outside the range verified in double precision, {lo:e} to {hi:e} (E* = {es:.4e} Pa)"
+        ),
+        format!("change the load, the radius or the moduli to bring it inside: {why}"),
+    ))
+}

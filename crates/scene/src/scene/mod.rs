@@ -14,6 +14,7 @@ use std::path::{Path, PathBuf};
 mod builder;
 mod heights;
 mod path_file;
+pub mod ranges;
 pub(crate) mod read;
 pub(crate) mod validate;
 
@@ -86,12 +87,13 @@ pub enum Profile {
         /// Radii (m).
         radii: [f64; 2],
     },
-    /// A flat circular punch with a rounded edge: $g = 0$ for $r \le$ `radius`, then the
-    /// parabolic edge $(r - \text{radius})^2/(2\rho)$.
+    /// A flat circular punch: $g = 0$ for $r \le$ `radius`, then the parabolic rounded
+    /// edge $(r - \text{radius})^2/(2\rho)$, or, with $\rho = 0$, the sharp edge (the
+    /// Boussinesq punch, out of reach beyond the face).
     Punch {
         /// Radius of the flat face (m).
         radius: f64,
-        /// Edge radius $\rho$ (m).
+        /// Edge radius $\rho$ (m); 0 for the sharp edge.
         edge_radius: f64,
     },
     /// A wave of amplitude $\Delta$: $g = \Delta(1-\cos 2\pi x/\lambda)$ along x, or the
@@ -134,7 +136,18 @@ impl Profile {
             Profile::Ellipsoid { radii } => x * x / (2.0 * radii[0]) + y * y / (2.0 * radii[1]),
             Profile::Punch { radius, edge_radius } => {
                 let d = (x.hypot(y) - radius).max(0.0);
-                d * d / (2.0 * edge_radius)
+                if edge_radius == 0.0 {
+                    // The sharp edge: off the face the punch is out of reach. Any height
+                    // larger than every approach will do; the face radius is (the planner
+                    // keeps the approach below 0.16 of it: 2 d/(pi a) <= 0.1).
+                    if d > 0.0 {
+                        radius
+                    } else {
+                        0.0
+                    }
+                } else {
+                    d * d / (2.0 * edge_radius)
+                }
             }
             Profile::Wavy { wavelength, amplitude, along_xy } => {
                 let k = 2.0 * PI / wavelength;

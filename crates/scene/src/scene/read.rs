@@ -285,8 +285,61 @@ fn geometry(cx: &Reader<'_>, raw: &RawScene) -> Result<Geometry, SceneError> {
 fn substrate(cx: &Reader<'_>, raw: &RawScene) -> Result<Substrate, SceneError> {
     let s = raw.substrate.get_ref();
     let sspan = raw.substrate.span();
-    let model =
-        cx.choice(&s.model, "substrate.model", &["homogeneous", "graded", "viscoelastic"])?;
+    // Keys that belong to one model only: given with another model they would be ignored
+    // silently, so they are refused; given without `model`, they name the model to write.
+    let graded_keys: [(&str, Option<Range<usize>>); 2] =
+        [("e0", s.e0.as_ref().map(|q| q.span())), ("k", s.k.as_ref().map(|k| k.span()))];
+    let visco_keys: [(&str, Option<Range<usize>>); 2] = [
+        ("alpha", s.alpha.as_ref().map(|q| q.span())),
+        ("beta", s.beta.as_ref().map(|q| q.span())),
+    ];
+    let model = match &s.model {
+        Some(m) => cx.choice(m, "substrate.model", &["homogeneous", "graded", "viscoelastic"])?,
+        // The one sensible value when the keys are those of an elastic body.
+        None => {
+            for (keys, model) in [(&graded_keys, "graded"), (&visco_keys, "viscoelastic")] {
+                if let Some((key, Some(span))) = keys.iter().find(|(_, sp)| sp.is_some()) {
+                    return Err(cx
+                        .err(
+                            ErrorKind::Schema,
+                            "substrate.model",
+                            Some(span.clone()),
+                            format!(
+                                "missing key `model` in [substrate]: `{key}` belongs to a {model} substrate"
+                            ),
+                        )
+                        .hint(format!(
+                            "add model = \"{model}\" (without `model` the substrate is homogeneous: material, or e and nu)"
+                        )));
+                }
+            }
+            "homogeneous"
+        }
+    };
+    let foreign = |keys: &[(&str, Option<Range<usize>>)]| -> Result<(), SceneError> {
+        match keys.iter().find(|(_, sp)| sp.is_some()) {
+            Some((key, Some(span))) => Err(cx
+                .err(
+                    ErrorKind::Schema,
+                    &format!("substrate.{key}"),
+                    Some(span.clone()),
+                    format!("`{key}` is not a key of a {model} substrate"),
+                )
+                .hint(match *key {
+                    "e0" | "k" => format!("remove `{key}`, or write model = \"graded\""),
+                    _ => format!("remove `{key}`, or write model = \"viscoelastic\""),
+                })),
+            _ => Ok(()),
+        }
+    };
+    match model {
+        "homogeneous" => {
+            foreign(&graded_keys)?;
+            foreign(&visco_keys)?;
+        }
+        "graded" => foreign(&visco_keys)?,
+        _ => foreign(&graded_keys)?,
+    }
     let keys = |e_what| material::Keys {
         table: "substrate",
         span: sspan.clone(),
@@ -371,7 +424,13 @@ fn substrate(cx: &Reader<'_>, raw: &RawScene) -> Result<Substrate, SceneError> {
 fn indenter(cx: &Reader<'_>, raw: &RawScene) -> Result<Indenter, SceneError> {
     let Some(ind) = &raw.indenter else { return Ok(Indenter::Rigid) };
     let i = ind.get_ref();
-    let model = cx.choice(&i.model, "indenter.model", &["rigid", "homogeneous", "same"])?;
+    let model = match &i.model {
+        Some(m) => cx.choice(m, "indenter.model", &["rigid", "homogeneous", "same"])?,
+        // Elastic constants say the indenter is elastic; an [indenter] table without them
+        // is the rigid indenter, as no table is.
+        None if i.material.is_some() || i.e.is_some() || i.nu.is_some() => "homogeneous",
+        None => "rigid",
+    };
     if model != "homogeneous" {
         material::refuse(
             cx,
@@ -380,6 +439,17 @@ fn indenter(cx: &Reader<'_>, raw: &RawScene) -> Result<Indenter, SceneError> {
             &format!("a {model} indenter takes no material"),
             "model = \"homogeneous\" with material = \"...\", or remove `material`",
         )?;
+        let e = i.e.as_ref().map(|q| ("e", q.span()));
+        if let Some((key, span)) = e.or(i.nu.as_ref().map(|n| ("nu", n.span()))) {
+            return Err(cx
+                .err(
+                    ErrorKind::Schema,
+                    &format!("indenter.{key}"),
+                    Some(span),
+                    format!("a {model} indenter takes no `{key}`"),
+                )
+                .hint("model = \"homogeneous\" (or leave `model` out) for an elastic indenter, or remove `e` and `nu`"));
+        }
     }
     Ok(match model {
         "rigid" => Indenter::Rigid,
@@ -770,8 +840,32 @@ fn history_file(
 fn motion(cx: &Reader<'_>, raw: &RawScene) -> Result<Motion, SceneError> {
     let Some(m) = &raw.motion else { return Ok(Motion::Static) };
     let mr = m.get_ref();
-    Ok(match cx.choice(&mr.kind, "motion.kind", &["static", "rolling"])? {
-        "static" => Motion::Static,
+    let rolling_key = mr
+        .speed
+        .as_ref()
+        .map(|q| ("speed", q.span()))
+        .or(mr.creep.as_ref().map(|c| ("creep", c.span())))
+        .or(mr.creepage.as_ref().map(|c| ("creepage", c.span())));
+    let kind = match &mr.kind {
+        Some(k) => cx.choice(k, "motion.kind", &["static", "rolling"])?,
+        // A speed or a creep says the bodies roll; nothing else can be meant.
+        None if rolling_key.is_some() => "rolling",
+        None => "static",
+    };
+    Ok(match kind {
+        "static" => {
+            if let Some((key, span)) = rolling_key {
+                return Err(cx
+                    .err(
+                        ErrorKind::Schema,
+                        &format!("motion.{key}"),
+                        Some(span),
+                        format!("a static contact takes no `{key}`"),
+                    )
+                    .hint("kind = \"rolling\" (or leave `kind` out) to roll, or remove the rolling keys"));
+            }
+            Motion::Static
+        }
         _ => {
             let sp = cx.required(
                 &mr.speed,

@@ -7,6 +7,7 @@
 //! from a file. The checks run in the order of the scene format (geometry, substrate,
 //! indenter, load, motion, outputs, solver), so the first problem of a file is reported.
 
+use super::ranges::{self, Range};
 use super::{
     Cycle, Elastic, Ellipse, FieldGrid, Geometry, History, HistoryControl, Indenter, Motion,
     NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Substrate, MAX_GRID,
@@ -51,13 +52,60 @@ fn interface(scene: &Scene) -> Result<(), Issue> {
     Ok(())
 }
 
+/// `v` finite and not subnormal (0 or at least 2.2e-308 in magnitude).
 fn finite(key: &str, v: f64) -> Result<f64, Issue> {
-    if v.is_finite() {
-        Ok(v)
-    } else {
+    if !v.is_finite() {
         Err(Issue::new(ErrorKind::OutOfRange, key, "must be a finite number")
             .hint("a finite number (a string with a unit, e.g. \"10 mm\", or SI)"))
+    } else if !ranges::is_normal_or_zero(v) {
+        Err(Issue::new(ErrorKind::OutOfRange, key, format!("{v:e} is a subnormal number")).hint(
+            "double precision keeps fewer than 16 digits below 2.2e-308; write 0 or a value of sensible size",
+        ))
+    } else {
+        Ok(v)
     }
+}
+
+/// The message and hint of a magnitude outside `r`.
+fn outside(key: &str, v: f64, r: &Range) -> Issue {
+    let u = if r.unit.is_empty() { String::new() } else { format!(" {}", r.unit) };
+    Issue::new(
+        ErrorKind::OutOfRange,
+        key,
+        format!(
+            "{} {v:e}{u} is outside the range verified in double precision, {:e}{u} to {:e}{u}",
+            r.name, r.lo, r.hi
+        ),
+    )
+    .hint(r.why)
+}
+
+/// `v` positive and within `r`.
+fn within(key: &str, v: f64, r: &Range) -> Result<f64, Issue> {
+    positive(key, v, r.name)?;
+    if v < r.lo || v > r.hi {
+        return Err(outside(key, v, r));
+    }
+    Ok(v)
+}
+
+/// `v` zero, or its magnitude within `r`.
+fn zero_or_within(key: &str, v: f64, r: &Range) -> Result<f64, Issue> {
+    finite(key, v)?;
+    if v != 0.0 && (v.abs() < r.lo || v.abs() > r.hi) {
+        return Err(outside(key, v, r));
+    }
+    Ok(v)
+}
+
+/// `v` finite, zero or normal, and `|v|` at most the range's upper end (signed values
+/// that may pass through zero, such as a load path's corners).
+fn at_most(key: &str, v: f64, r: &Range) -> Result<f64, Issue> {
+    finite(key, v)?;
+    if v.abs() > r.hi {
+        return Err(outside(key, v, r));
+    }
+    Ok(v)
 }
 
 /// `v` finite and > 0; `name` says what it is ("radius", "modulus", ...).
@@ -83,18 +131,18 @@ fn poisson(key: &str, nu: f64) -> Result<f64, Issue> {
 fn geometry(g: &Geometry) -> Result<(), Issue> {
     match g {
         Geometry::Cylinder { radius } | Geometry::Sphere { radius } => {
-            positive("geometry.radius", *radius, "radius")?;
+            within("geometry.radius", *radius, &ranges::LENGTH)?;
         }
         Geometry::Punch { half_width } => {
-            positive("geometry.half_width", *half_width, "half-width")?;
+            within("geometry.half_width", *half_width, &ranges::LENGTH)?;
         }
         Geometry::Ellipsoid(Ellipse::SemiAxes { a, b }) => {
-            positive("geometry.semi_axes", *a, "length")?;
-            positive("geometry.semi_axes", *b, "length")?;
+            within("geometry.semi_axes", *a, &ranges::LENGTH)?;
+            within("geometry.semi_axes", *b, &ranges::LENGTH)?;
         }
         Geometry::Ellipsoid(Ellipse::Radii { rx, ry }) => {
-            positive("geometry.radii", *rx, "length")?;
-            positive("geometry.radii", *ry, "length")?;
+            within("geometry.radii", *rx, &ranges::LENGTH)?;
+            within("geometry.radii", *ry, &ranges::LENGTH)?;
         }
         Geometry::Patches(ps) => patches(ps)?,
         Geometry::Surface(s) => surface(s)?,
@@ -107,8 +155,8 @@ pub const MAX_SURFACE_CELLS: usize = 4096;
 
 fn surface(s: &super::Surface) -> Result<(), Issue> {
     use super::Profile;
-    positive("geometry.size", s.size[0], "length")?;
-    positive("geometry.size", s.size[1], "length")?;
+    within("geometry.size", s.size[0], &ranges::LENGTH)?;
+    within("geometry.size", s.size[1], &ranges::LENGTH)?;
     for c in s.cells {
         if !(8..=MAX_SURFACE_CELLS).contains(&c) {
             return Err(Issue::new(
@@ -121,24 +169,29 @@ fn surface(s: &super::Surface) -> Result<(), Issue> {
     }
     match s.profile {
         Profile::Sphere { radius } => {
-            positive("geometry.profile.radius", radius, "radius")?;
+            within("geometry.profile.radius", radius, &ranges::LENGTH)?;
         }
         Profile::Ellipsoid { radii } => {
-            positive("geometry.profile.radii", radii[0], "radius")?;
-            positive("geometry.profile.radii", radii[1], "radius")?;
+            within("geometry.profile.radii", radii[0], &ranges::LENGTH)?;
+            within("geometry.profile.radii", radii[1], &ranges::LENGTH)?;
         }
         Profile::Punch { radius, edge_radius } => {
-            positive("geometry.profile.radius", radius, "radius")?;
-            positive("geometry.profile.edge_radius", edge_radius, "radius")?;
+            within("geometry.profile.radius", radius, &ranges::LENGTH)?;
+            // 0: the sharp-edged punch.
+            if edge_radius != 0.0 {
+                within("geometry.profile.edge_radius", edge_radius, &ranges::LENGTH)?;
+            }
         }
         Profile::Wavy { wavelength, amplitude, .. } => {
-            positive("geometry.profile.wavelength", wavelength, "length")?;
-            positive("geometry.profile.amplitude", amplitude, "length")?;
+            within("geometry.profile.wavelength", wavelength, &ranges::LENGTH)?;
+            within("geometry.profile.amplitude", amplitude, &ranges::SMALL_LENGTH)?;
         }
         Profile::Cylinder { radius, length, crown, end_radius } => {
-            positive("geometry.profile.radius", radius, "radius")?;
-            positive("geometry.profile.length", length, "length")?;
-            if !(crown.is_finite() && crown >= 0.0) {
+            within("geometry.profile.radius", radius, &ranges::LENGTH)?;
+            within("geometry.profile.length", length, &ranges::LENGTH)?;
+            if !(crown.is_finite() && crown >= 0.0)
+                || zero_or_within("geometry.profile.crown", crown, &ranges::SMALL_LENGTH).is_err()
+            {
                 return Err(Issue::new(
                     ErrorKind::OutOfRange,
                     "geometry.profile.crown",
@@ -147,7 +200,7 @@ fn surface(s: &super::Surface) -> Result<(), Issue> {
                 .hint("the crown drop at the roller ends is a length >= 0 (0: no crown)"));
             }
             if crown > 0.0 {
-                positive("geometry.profile.end_radius", end_radius, "radius")?;
+                within("geometry.profile.end_radius", end_radius, &ranges::LENGTH)?;
                 let end = (2.0 * end_radius * crown).sqrt();
                 if end > 0.5 * length {
                     return Err(Issue::new(
@@ -179,17 +232,17 @@ fn surface(s: &super::Surface) -> Result<(), Issue> {
             )
             .hint("one row per y with one height per x cell, as `cells` says"));
         }
-        if let Some(k) = h.iter().position(|v| !v.is_finite()) {
+        if let Some(k) = h.iter().position(|v| !v.is_finite() || !ranges::is_normal_or_zero(*v)) {
             return Err(Issue::new(
                 ErrorKind::OutOfRange,
                 "geometry.roughness.file",
                 format!(
-                    "height {k} (row {}, column {}) is not a finite number",
+                    "height {k} (row {}, column {}) is not finite, or is a subnormal number",
                     k / s.cells[0],
                     k % s.cells[0]
                 ),
             )
-            .hint("every height must be a number; fill missing points before reading"));
+            .hint("every height must be a number, 0 or at least 2.2e-308 in magnitude; fill missing points before reading"));
         }
     }
     Ok(())
@@ -208,20 +261,23 @@ fn patches(ps: &[Patch]) -> Result<(), Issue> {
         let key = format!("geometry.patches[{i}]");
         match p.shape {
             PatchShape::Square { side } => {
-                positive(&format!("{key}.side"), side, "side")?;
+                within(&format!("{key}.side"), side, &ranges::LENGTH)?;
             }
             PatchShape::Rectangle { sides } => {
-                positive(&format!("{key}.sides"), sides[0], "side")?;
-                positive(&format!("{key}.sides"), sides[1], "side")?;
+                within(&format!("{key}.sides"), sides[0], &ranges::LENGTH)?;
+                within(&format!("{key}.sides"), sides[1], &ranges::LENGTH)?;
             }
             PatchShape::Circle { radius } => {
-                positive(&format!("{key}.radius"), radius, "radius")?;
+                within(&format!("{key}.radius"), radius, &ranges::LENGTH)?;
             }
         }
         finite(&format!("{key}.centre"), p.centre[0])?;
         finite(&format!("{key}.centre"), p.centre[1])?;
         let pk = format!("{key}.pressure");
         finite(&pk, p.pressure)?;
+        if p.pressure > 0.0 {
+            within(&pk, p.pressure, &ranges::PRESSURE)?;
+        }
         if p.pressure <= 0.0 {
             return Err(Issue::new(
                 ErrorKind::OutOfRange,
@@ -252,7 +308,7 @@ fn substrate(s: &Substrate) -> Result<(), Issue> {
     match *s {
         Substrate::Homogeneous(Elastic { e, nu }) => {
             poisson("substrate.nu", nu)?;
-            positive("substrate.e", e, "modulus")?;
+            within("substrate.e", e, &ranges::MODULUS)?;
         }
         Substrate::Graded { e0, k, nu } => {
             if !(k.is_finite() && (0.0..1.0).contains(&k)) {
@@ -287,13 +343,13 @@ fn substrate(s: &Substrate) -> Result<(), Issue> {
                 )));
             }
             poisson("substrate.nu", nu)?;
-            positive("substrate.e0", e0, "graded modulus (force/length^(2+k))")?;
+            within("substrate.e0", e0, &ranges::MODULUS)?;
         }
         Substrate::Viscoelastic { elastic: Elastic { e, nu }, alpha, beta } => {
             poisson("substrate.nu", nu)?;
-            positive("substrate.e", e, "modulus")?;
-            positive("substrate.alpha", alpha, "time")?;
-            positive("substrate.beta", beta, "time")?;
+            within("substrate.e", e, &ranges::MODULUS)?;
+            within("substrate.alpha", alpha, &ranges::TIME)?;
+            within("substrate.beta", beta, &ranges::TIME)?;
             if alpha < beta {
                 return Err(Issue::new(
                     ErrorKind::OutOfRange,
@@ -309,7 +365,7 @@ fn substrate(s: &Substrate) -> Result<(), Issue> {
 
 fn indenter(i: &Indenter) -> Result<(), Issue> {
     if let Indenter::Homogeneous(Elastic { e, nu }) = *i {
-        positive("indenter.e", e, "modulus")?;
+        within("indenter.e", e, &ranges::MODULUS)?;
         poisson("indenter.nu", nu)?;
     }
     Ok(())
@@ -318,7 +374,7 @@ fn indenter(i: &Indenter) -> Result<(), Issue> {
 fn load(scene: &Scene) -> Result<(), Issue> {
     let l = &scene.load;
     let two_d = scene.geometry.is_2d();
-    let force_name = if two_d { "load per unit length" } else { "force" };
+    let force_range = if two_d { ranges::FORCE_PER_LENGTH } else { ranges::FORCE };
     match (&scene.geometry, l.normal) {
         (Geometry::Patches(_), NormalLoad::FromPatches(_)) => {}
         (Geometry::Patches(_), _) => {
@@ -338,7 +394,7 @@ fn load(scene: &Scene) -> Result<(), Issue> {
             .hint("normal = P (N/m in 2D, N in 3D), or half_width = a"))
         }
         (_, NormalLoad::Force(p)) => {
-            positive("load.normal", p, force_name)?;
+            within("load.normal", p, &force_range)?;
             if let Some(sw) = scene.load.normal_sweep {
                 if !matches!(scene.geometry, Geometry::Surface(_)) {
                     return Err(Issue::new(
@@ -348,7 +404,7 @@ fn load(scene: &Scene) -> Result<(), Issue> {
                     )
                     .hint("give one force, e.g. normal = \"10 N\""));
                 }
-                positive("load.normal", sw.from, force_name)?;
+                within("load.normal", sw.from, &force_range)?;
                 if sw.from >= p {
                     return Err(Issue::new(
                         ErrorKind::OutOfRange,
@@ -368,7 +424,7 @@ fn load(scene: &Scene) -> Result<(), Issue> {
             .hint("normal = \"10 N\" (force control) or approach = \"2 um\" (displacement control)"))
         }
         (Geometry::Surface(_), NormalLoad::Approach(d)) => {
-            positive("load.approach", d, "approach")?;
+            within("load.approach", d, &ranges::SMALL_LENGTH)?;
         }
         (_, NormalLoad::Approach(_)) => {
             return Err(Issue::new(
@@ -379,11 +435,12 @@ fn load(scene: &Scene) -> Result<(), Issue> {
             .hint("give load.normal = P"))
         }
         (_, NormalLoad::HalfWidth(a)) => {
-            positive("load.half_width", a, "half-width")?;
+            within("load.half_width", a, &ranges::LENGTH)?;
         }
     }
+    // |T| <= f P bounds the tangential load; it needs no range of its own.
     finite("load.tangential", l.tangential)?;
-    if !l.direction_deg.is_finite() {
+    if !l.direction_deg.is_finite() || !ranges::is_normal_or_zero(l.direction_deg) {
         return Err(Issue::new(
             ErrorKind::OutOfRange,
             "load.direction_deg",
@@ -399,7 +456,8 @@ fn load(scene: &Scene) -> Result<(), Issue> {
         )
         .hint("a Coulomb coefficient f >= 0"));
     }
-    finite("load.moment", l.moment)?;
+    zero_or_within("load.friction", l.friction, &ranges::FRICTION)?;
+    zero_or_within("load.moment", l.moment, &ranges::MOMENT)?;
     if l.moment != 0.0 && two_d {
         return Err(Issue::new(
             ErrorKind::Impossible,
@@ -521,8 +579,15 @@ fn history(scene: &Scene) -> Result<(), Issue> {
         )
         .hint(format!("from 1 to {} corner values", History::MAX_CORNERS)));
     }
+    // Corner values along a path are signed and pass through zero: a value far below the
+    // range (a run's solved force of 1e-14 N at a zero crossing, read back from its
+    // history.csv) is a numerical zero of that path, not a magnitude of its own; the path's
+    // scale is its normal load's. So only the upper end (and subnormals) are refused here.
     for (i, v) in h.tangential.iter().enumerate() {
-        finite(&key(list, i), *v)?;
+        match h.control {
+            HistoryControl::Force => at_most(&key(list, i), *v, &ranges::FORCE)?,
+            HistoryControl::Shift => at_most(&key(list, i), *v, &ranges::SMALL_LENGTH)?,
+        };
     }
     for (k, other) in [("normal", &h.normal), ("moment", &h.moment)] {
         if let Some(v) = other {
@@ -535,7 +600,11 @@ fn history(scene: &Scene) -> Result<(), Issue> {
                 .hint(format!("give one {k} value per corner ({n})")));
             }
             for (i, x) in v.iter().enumerate() {
-                finite(&key(k, i), *x)?;
+                match k {
+                    "normal" if *x > 0.0 => within(&key(k, i), *x, &ranges::FORCE)?,
+                    "normal" => finite(&key(k, i), *x)?,
+                    _ => at_most(&key(k, i), *x, &ranges::MOMENT)?,
+                };
             }
         }
     }
@@ -582,24 +651,25 @@ fn history(scene: &Scene) -> Result<(), Issue> {
 
 fn motion(scene: &Scene) -> Result<(), Issue> {
     if let Motion::RollingCreepage { speed, longitudinal, lateral, spin } = scene.motion {
-        positive("motion.speed", speed, "speed")?;
+        within("motion.speed", speed, &ranges::SPEED)?;
         for (key, v) in [
             ("motion.creepage.longitudinal", longitudinal),
             ("motion.creepage.lateral", lateral),
             ("motion.creepage.spin", spin),
         ] {
-            if !v.is_finite() || v.abs() > 1e6 {
-                return Err(Issue::new(ErrorKind::OutOfRange, key, format!("creepage {v} is not a finite number of sensible size"))
-                    .hint("creepages are small numbers (1e-4 to 1e-2 in wheel-rail contact; spin in 1/m); larger ones mean full slip and are still solved"));
+            if !v.is_finite() || zero_or_within(key, v, &ranges::CREEP).is_err() {
+                return Err(Issue::new(ErrorKind::OutOfRange, key, format!("creepage {v:e} is outside the range verified in double precision: 0, or 1e-12 to 1e6 in magnitude"))
+                    .hint("creepages are small numbers (1e-4 to 1e-2 in wheel-rail contact; spin in 1/m); larger ones mean full slip and are still solved, up to 1e6"));
             }
         }
     }
     if let Motion::Rolling { speed, creep } = scene.motion {
-        positive("motion.speed", speed, "speed")?;
+        within("motion.speed", speed, &ranges::SPEED)?;
         if !creep.is_finite() {
             return Err(Issue::new(ErrorKind::OutOfRange, "motion.creep", "creep must be finite")
                 .hint("a finite creep ratio (omega R - w)/w, e.g. creep = 1e-3"));
         }
+        zero_or_within("motion.creep", creep, &ranges::CREEP)?;
         if !scene.geometry.is_2d() {
             return Err(Issue::new(
                 ErrorKind::Impossible,

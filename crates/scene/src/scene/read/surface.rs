@@ -104,18 +104,11 @@ pub(super) fn surface(
                 Dim::LENGTH,
                 "radius",
             )?,
-            edge_radius: cx.qty(
-                need(
-                    cx,
-                    &pr.edge_radius,
-                    "geometry.profile.edge_radius",
-                    pspan.clone(),
-                    "the edge radius",
-                )?,
-                "geometry.profile.edge_radius",
-                Dim::LENGTH,
-                "radius",
-            )?,
+            // Left out (or 0): the sharp-edged flat punch.
+            edge_radius: match &pr.edge_radius {
+                None => 0.0,
+                Some(q) => cx.qty(q, "geometry.profile.edge_radius", Dim::LENGTH, "radius")?,
+            },
         },
         "wavy" => Profile::Wavy {
             wavelength: cx.qty(
