@@ -48,7 +48,8 @@ def rough_surface(n, hurst, rms, k_low, k_high, seed):
     return h * (rms / h.std())
 
 
-def run_ours(binary, work, n, size, e, nu, force, tol):
+def run_ours(binary, work, n, size, e, nu, force, tol, extra=""):
+    """Our CLI on heights.npy in `work`; `extra` is appended to the scene (a table)."""
     scene = f"""title = "tamaas comparison: periodic rough surface, {n} x {n}"
 [geometry]
 kind = "surface"
@@ -72,7 +73,7 @@ normal = {force}
 tolerance = {tol}
 [outputs]
 surface = true
-"""
+{extra}"""
     path = os.path.join(work, "scene.toml")
     with open(path, "w") as f:
         f.write(scene)

@@ -144,7 +144,7 @@
 //!   reaches the lattice edge (the lattice then truncates the surface).
 //!
 //! [`NormalSolution::contact_grid`] turns the contact cells and their pressure into a
-//! [`ContactGrid`] for the tangential solvers (partial slip on the computed contact).
+//! [`ContactGrid`](stickslip_lattice::ContactGrid) for the tangential solvers (partial slip on the computed contact).
 
 mod capped;
 mod iteration;

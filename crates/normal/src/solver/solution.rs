@@ -109,7 +109,7 @@ impl NormalSolution {
     /// [`stickslip_traction::FastProblem`]).
     ///
     /// # Errors
-    /// [`Error::Lattice`] (an empty grid) when there is no contact.
+    /// [`Error::Lattice`](crate::Error::Lattice) (an empty grid) when there is no contact.
     pub fn contact_grid(&self) -> Result<ContactGrid> {
         Ok(ContactGrid::from_mask(
             self.hx,
