@@ -2,7 +2,7 @@
 //! the maps of a 1024 x 1024 surface are drawn as images of 160 x 160 block means, while the
 //! `.npy` arrays keep every cell.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 fn tmp(name: &str) -> PathBuf {
@@ -15,7 +15,7 @@ fn tmp(name: &str) -> PathBuf {
 
 const SCENE: &str = "[geometry]\nkind = \"surface\"\nsize = [\"0.6 mm\", \"0.6 mm\"]\ncells = [1024, 1024]\n[geometry.profile]\nshape = \"sphere\"\nradius = \"10 mm\"\n[geometry.roughness]\nhurst = 0.8\nrms_height = \"50 nm\"\nk_low = 2.0\nseed = 1\n[substrate]\nmodel = \"homogeneous\"\nmaterial = \"steel\"\n[indenter]\nmodel = \"same\"\n[load]\nnormal = \"5 N\"\ntangential = \"0.5 N\"\nfriction = 0.2\nOUTPUTS";
 
-fn run(dir: &PathBuf, outputs: &str) -> PathBuf {
+fn run(dir: &Path, outputs: &str) -> PathBuf {
     let scene = dir.join("big.toml");
     std::fs::write(&scene, SCENE.replace("OUTPUTS", outputs)).unwrap();
     let out = dir.join("out");
