@@ -409,7 +409,25 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
         );
     }
     // The validated scene, every quantity converted to SI, defaults included.
-    let resolved = Scene { source: None, ..sc.clone() };
+    let mut resolved = Scene { source: None, ..sc.clone() };
+    // A measured or generated roughness has a height per lattice cell (a million at 1024^2):
+    // the page states its size and range; the heights themselves are in the scene's file or
+    // its generator, and the gap they give in surface_gap.npy.
+    let mut roughness = String::new();
+    if let stickslip_scene::Geometry::Surface(surf) = &mut resolved.geometry {
+        if let Some(h) = surf.roughness.take() {
+            let n = h.len() as f64;
+            let rms = (h.iter().map(|v| v * v).sum::<f64>() / n.max(1.0)).sqrt();
+            let (lo, hi) = h
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+            roughness = format!(
+                "\nroughness (shown as None above): {} heights, rms {rms:e} m, from {lo:e} to {hi:e} m; \
+                 the initial gap they give is in surface_gap.npy",
+                h.len()
+            );
+        }
+    }
     let _ = writeln!(
         s,
         "<details><summary>The validated scene with its defaults</summary>\n<p>Every quantity in SI units: lengths in m, moduli and stresses \
@@ -417,7 +435,7 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
          where the name ends in <code>_deg</code>); a field grid with <code>scale: HalfWidth</code> \
          is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>\n</details>",
         esc(&format!(
-            "geometry: {:#?}\nsubstrate: {:#?}\nindenter: {:#?}\nload: {:#?}\nmotion: {:#?}\noutputs: {:#?}\nsolver: {:#?}",
+            "geometry: {:#?}{roughness}\nsubstrate: {:#?}\nindenter: {:#?}\nload: {:#?}\nmotion: {:#?}\noutputs: {:#?}\nsolver: {:#?}",
             resolved.geometry,
             resolved.substrate,
             resolved.indenter,
@@ -534,6 +552,13 @@ fn figures(s: &mut String, plots: &[(String, String)], plots_on: bool) {
         s.push_str("<p>This result has no arrays to plot (turn on <code>outputs.surface</code>, <code>outputs.field</code> or <code>outputs.cycle</code>).</p>\n");
         return;
     }
+    s.push_str(
+        "<p>The plots are for reading: a map of a lattice more than 160 cells across shows the \
+         means of square blocks of cells (its title gives the block size), drawn as an image. \
+         The full-resolution arrays lie beside this report, whole: the <code>.npy</code> files \
+         (<code>surface_p.npy</code>, <code>surface_qx.npy</code>, … and <code>field_*.npy</code>), \
+         the CSV files and <code>result.json</code>.</p>\n",
+    );
     for (i, (name, svg)) in plots.iter().enumerate() {
         // The SVG follows its XML prologue, if any.
         let body = svg.find("<svg").map_or(svg.as_str(), |k| &svg[k..]);

@@ -385,7 +385,7 @@ pub(crate) struct RawOutputs {
     /// A loading cycle (hysteresis) of the tangential load.
     #[schemars(with = "Option<RawCycle>")]
     pub cycle: Option<Spanned<RawCycle>>,
-    /// SVG plots beside result.json; default false.
+    /// SVG plots beside result.json and in report.html; default true (false turns them off).
     pub plots: Option<bool>,
 }
 

@@ -6,6 +6,7 @@ use plotters::prelude::*;
 
 mod contour;
 mod parameters;
+mod raster;
 
 use stickslip_run::reference;
 use stickslip_run::{Outcome, Plan, SurfaceOut};
@@ -339,9 +340,79 @@ fn equal_axes(w: f64, h: f64) -> (u32, u32) {
     ((w * k).round().max(60.0) as u32, (h * k).round().max(60.0) as u32)
 }
 
-/// Edges between a stick cell (`stick[i][j] == 1`) and any other cell or the grid's edge, as
-/// segments in metres: the outline of the stick zone.
+/// The outline of the stick zone (`stick[i][j] == 1`), as segments in metres. On a lattice
+/// drawn in blocks, the outline of the blocks' stick map (as the stick map
+/// shows it); collinear edges that meet are joined into one segment.
 fn stick_outline(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> Vec<[(f64, f64); 2]> {
+    let (bx, by) = (block(x.len()), block(y.len()));
+    let segs = if bx > 1 || by > 1 {
+        let merged = merge_stick(stick, y.len(), bx, by);
+        cell_edges(&coarse_axis(x, bx), &coarse_axis(y, by), &merged)
+    } else {
+        cell_edges(x, y, stick)
+    };
+    join_collinear(segs)
+}
+
+/// Segments along x (then along y) that continue one another, joined.
+fn join_collinear(segs: Vec<[(f64, f64); 2]>) -> Vec<[(f64, f64); 2]> {
+    // Cell sides computed from neighbouring centres differ by rounding only.
+    let near = |u: f64, v: f64, s: &[(f64, f64); 2]| {
+        (u - v).abs() <= 1e-6 * (s[1].0 - s[0].0).abs().max((s[1].1 - s[0].1).abs())
+    };
+    let (mut along_x, mut along_y): (Vec<_>, Vec<_>) =
+        segs.into_iter().partition(|[a, b]| (a.1 - b.1).abs() <= (a.0 - b.0).abs());
+    let mut out: Vec<[(f64, f64); 2]> = Vec::new();
+    along_x.sort_by(|p, q| p[0].1.total_cmp(&q[0].1).then(p[0].0.total_cmp(&q[0].0)));
+    for s in along_x {
+        match out.last_mut() {
+            Some([a, b]) if near(a.1, s[0].1, &s) && near(b.0, s[0].0, &s) => *b = s[1],
+            _ => out.push(s),
+        }
+    }
+    let n = out.len();
+    along_y.sort_by(|p, q| p[0].0.total_cmp(&q[0].0).then(p[0].1.total_cmp(&q[0].1)));
+    for s in along_y {
+        match out[n..].last_mut() {
+            Some([a, b]) if near(a.0, s[0].0, &s) && near(b.1, s[0].1, &s) => *b = s[1],
+            _ => out.push(s),
+        }
+    }
+    out
+}
+
+/// Blocks of `bx` x `by` cells of `stick[i][j]` (`ny` cells along y): a block sticks if most
+/// of its contact elements stick; outside if it has none.
+fn merge_stick(stick: &[Vec<i8>], ny: usize, bx: usize, by: usize) -> Vec<Vec<i8>> {
+    stick
+        .chunks(bx)
+        .map(|cols| {
+            (0..ny.div_ceil(by))
+                .map(|jb| {
+                    let rows = jb * by..((jb + 1) * by).min(ny);
+                    let (mut st, mut sl) = (0usize, 0usize);
+                    for c in cols {
+                        for v in &c[rows.clone()] {
+                            match v {
+                                1 => st += 1,
+                                0 => sl += 1,
+                                _ => {}
+                            }
+                        }
+                    }
+                    if st + sl == 0 {
+                        -1
+                    } else {
+                        i8::from(st >= sl)
+                    }
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Edges between a stick cell and any other cell or the grid's edge, one per cell side.
+fn cell_edges(x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> Vec<[(f64, f64); 2]> {
     let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
     let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
     let is = |i: isize, j: isize| -> bool {
@@ -407,6 +478,38 @@ fn coarse_rows(v: &[Vec<f64>], by: usize, bx: usize) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// Maps of more cells than this are drawn as one embedded image rather than a rectangle
+/// per cell (which costs about 100 bytes each in the SVG).
+const MAX_RECT_CELLS: usize = 2500;
+
+/// The image of a map: pixel (column, row from the top) of cell (`i`, `j`), with `x` and
+/// `y` the cell centres; `top_is_max_y` when larger y is drawn higher (not for depth).
+fn raster(
+    x: &[f64],
+    y: &[f64],
+    top_is_max_y: bool,
+    colour: impl Fn(usize, usize) -> Option<RGBColor>,
+) -> Vec<u8> {
+    let (nx, ny) = (x.len(), y.len());
+    let x_up = x[nx - 1] >= x[0];
+    let y_up = y[ny - 1] >= y[0];
+    let mut px = Vec::with_capacity(nx * ny);
+    for r in 0..ny {
+        let j = if y_up == top_is_max_y { ny - 1 - r } else { r };
+        for c in 0..nx {
+            let i = if x_up { c } else { nx - 1 - c };
+            px.push(colour(i, j).map_or([0, 0, 0, 0], |RGBColor(r, g, b)| [r, g, b, 255]));
+        }
+    }
+    raster::png_rgba(nx, ny, &px)
+}
+
+/// The marker rectangle over the whole plot area, which [`raster::embed`] replaces.
+fn marker(a: (f64, f64), b: (f64, f64)) -> Rectangle<(f64, f64)> {
+    let (r, g, bl) = raster::MARKER;
+    Rectangle::new([a, b], RGBColor(r, g, bl).filled())
+}
+
 /// A map of `v[j][i]` (rows along y, columns along x) of the quantity `name` in `base` units.
 struct Map<'a> {
     title: String,
@@ -432,6 +535,7 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
         return heat_map(&Map { title, x: &x, y: &y, v: &v, ..*m });
     }
     let (x, y, v) = (m.x, m.y, m.v);
+    let as_image = x.len() * y.len() > MAX_RECT_CELLS;
     let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
     let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
     let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
@@ -466,11 +570,15 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
             .y_label_formatter(&|v| tick(*v, syb - sya))
             .draw()
             .map_err(err)?;
+        let d = lu.div;
         let cells = y
             .iter()
             .enumerate()
-            .flat_map(|(j, &yy)| x.iter().enumerate().map(move |(i, &xx)| (i, j, xx, yy)));
-        let d = lu.div;
+            .flat_map(|(j, &yy)| x.iter().enumerate().map(move |(i, &xx)| (i, j, xx, yy)))
+            .filter(|_| !as_image);
+        if as_image {
+            chart.draw_series(std::iter::once(marker((sxa, sya), (sxb, syb)))).map_err(err)?;
+        }
         chart
             .draw_series(cells.map(|(i, j, xx, yy)| {
                 Rectangle::new(
@@ -503,40 +611,24 @@ fn heat_map(m: &Map<'_>) -> PlotResult {
         colour_bar(&right, scale, &vu, m.name, (step, &levels))?;
         root.present().map_err(err)?;
     }
+    if as_image {
+        let png = raster(x, y, !m.yflip, |i, j| Some(scale.colour(v[j][i])));
+        raster::embed(&mut s, &png)?;
+    }
     Ok(s)
 }
+
+/// Colours of the stick map.
+const STICK: RGBColor = RGBColor(70, 110, 220);
+const SLIP: RGBColor = RGBColor(220, 80, 60);
 
 fn stick_map((title, sub): (&str, &str), x: &[f64], y: &[f64], stick: &[Vec<i8>]) -> PlotResult {
     let (bx, by) = (block(x.len()), block(y.len()));
     if bx > 1 || by > 1 {
-        // A block sticks if most of its contact elements stick; outside if it has none.
-        let merged: Vec<Vec<i8>> = stick
-            .chunks(bx)
-            .map(|cols| {
-                (0..y.len().div_ceil(by))
-                    .map(|jb| {
-                        let rows = jb * by..((jb + 1) * by).min(y.len());
-                        let (mut st, mut sl) = (0usize, 0usize);
-                        for c in cols {
-                            for v in &c[rows.clone()] {
-                                match v {
-                                    1 => st += 1,
-                                    0 => sl += 1,
-                                    _ => {}
-                                }
-                            }
-                        }
-                        if st + sl == 0 {
-                            -1
-                        } else {
-                            i8::from(st >= sl)
-                        }
-                    })
-                    .collect()
-            })
-            .collect();
+        let merged = merge_stick(stick, y.len(), bx, by);
         return stick_map((title, sub), &coarse_axis(x, bx), &coarse_axis(y, by), &merged);
     }
+    let as_image = x.len() * y.len() > MAX_RECT_CELLS;
     let hx = if x.len() > 1 { x[1] - x[0] } else { 1.0 };
     let hy = if y.len() > 1 { y[1] - y[0] } else { 1.0 };
     let (xa, xb) = (x[0] - 0.5 * hx, x[x.len() - 1] + 0.5 * hx);
@@ -571,14 +663,17 @@ fn stick_map((title, sub): (&str, &str), x: &[f64], y: &[f64], stick: &[Vec<i8>]
         let cells = x.iter().enumerate().flat_map(|(i, &xx)| {
             y.iter().enumerate().filter_map(move |(j, &yy)| {
                 let st = stick[i][j];
-                (st >= 0).then_some((xx, yy, st))
+                (st >= 0 && !as_image).then_some((xx, yy, st))
             })
         });
+        if as_image {
+            chart.draw_series(std::iter::once(marker((sxa, sya), (sxb, syb)))).map_err(err)?;
+        }
         // Coarse grids show each element with a thin gap; fine ones edge to edge.
         let half = if x.len().max(y.len()) > 40 { 0.5 } else { 0.45 };
         chart
             .draw_series(cells.map(|(xx, yy, st)| {
-                let c = if st == 1 { RGBColor(70, 110, 220) } else { RGBColor(220, 80, 60) };
+                let c = if st == 1 { STICK } else { SLIP };
                 Rectangle::new(
                     [
                         ((xx - half * hx) / d, (yy - half * hy) / d),
@@ -589,6 +684,14 @@ fn stick_map((title, sub): (&str, &str), x: &[f64], y: &[f64], stick: &[Vec<i8>]
             }))
             .map_err(err)?;
         root.present().map_err(err)?;
+    }
+    if as_image {
+        let png = raster(x, y, true, |i, j| match stick[i][j] {
+            1 => Some(STICK),
+            0 => Some(SLIP),
+            _ => None,
+        });
+        raster::embed(&mut s, &png)?;
     }
     Ok(s)
 }

@@ -264,7 +264,9 @@ pub(crate) fn run(
     if h.moment.is_some() {
         cx.ev.twist += cells * steps.len() as u64;
     }
-    cx.solve_seconds = steps.iter().map(|s| s.seconds).sum();
+    // Added to the normal solver's time when a surface's normal solve ran before the path.
+    let path_seconds: f64 = steps.iter().map(|s| s.seconds).sum();
+    cx.solve_seconds += path_seconds;
     cx.elements = st.grid.len();
     cx.iterations = steps.iter().map(|s| s.newton_iterations).sum();
     cx.inner_iterations = steps.iter().map(|s| s.products).sum();
@@ -409,7 +411,7 @@ pub(crate) fn run(
         cx.iterations,
         cx.inner_iterations,
         cx.residual,
-        cx.solve_seconds,
+        path_seconds,
         loops.len(),
         if loops.len() == 1 { "" } else { "s" },
         if loops.is_empty() {

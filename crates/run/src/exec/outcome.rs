@@ -396,12 +396,15 @@ pub struct FieldOut {
 pub struct SolverOut {
     /// The techniques used (per effect), joined.
     pub method: String,
-    /// Iterations of the last iterative solver that ran (LP pivots, fast-solver Newton
-    /// steps, root-solver iterations; a surface without a grid solver: the normal solver's
-    /// conjugate-gradient iterations on the finest lattice), 0 for closed forms.
+    /// Iterations of the last iterative solver that ran, its own figure (LP pivots,
+    /// fast-solver, coupled-solve, load-path and exact-rolling Newton steps (a load path's and
+    /// a coupled solve's summed over steps or passes), 1 for FASTSIM, root-solver iterations;
+    /// a surface without a grid solver: the normal solver's conjugate-gradient iterations on
+    /// the finest lattice), 0 for closed forms.
     pub iterations: usize,
     /// Inner iterations: conjugate-gradient iterations summed over the fast solver's Newton
-    /// steps (the normal solver alone: its FFT products on the finest lattice); 0 otherwise.
+    /// steps (the normal solver alone, a load path and exact rolling: their FFT products);
+    /// 0 for solvers without inner iterations (the LP, FASTSIM, root solvers).
     pub inner_iterations: usize,
     /// Residual of the last iterative solve, 0 for closed forms (the fast solver: relative
     /// complementarity residual $\lVert\mathbf r\rVert/\lVert\mathbf q\rVert$; the LP:
@@ -412,7 +415,8 @@ pub struct SolverOut {
     /// alone: its lattice cells), 0 when none ran.
     pub elements: usize,
     /// Wall time of the lattice solvers including their set-up (s): the normal solver of a
-    /// surface (all its load steps) plus the grid solver; 0 when none ran.
+    /// surface (all its load steps) plus the grid solver, the load path or the rolling solve
+    /// after it (the coupled solve: its own time, normal passes included); 0 when none ran.
     pub solve_seconds: f64,
     /// Wall time of the run (s).
     pub seconds: f64,

@@ -57,7 +57,7 @@ pub(crate) fn solve(
     cx.progress("rolling", 1, 1);
     cx.ev.rolling += 1;
     cx.ev.friction += grid.len() as u64;
-    cx.solve_seconds = t0.elapsed().as_secs_f64();
+    cx.solve_seconds += t0.elapsed().as_secs_f64();
     cx.elements = grid.len();
     let Some(sol) = sol else {
         let (fx, fy) =

@@ -54,7 +54,7 @@ impl SceneBuilder {
                     history: None,
                 },
                 motion: Motion::Static,
-                outputs: Outputs { surface: true, field: None, cycle: None, plots: false },
+                outputs: Outputs { surface: true, field: None, cycle: None, plots: true },
                 solver: SolverOptions::default(),
                 interface: super::Interface::default(),
                 source: None,
@@ -141,7 +141,7 @@ impl SceneBuilder {
         self
     }
 
-    /// SVG plots beside the JSON.
+    /// SVG plots beside the JSON and in report.html (on by default).
     pub fn plots(mut self, on: bool) -> Self {
         self.scene.outputs.plots = on;
         self

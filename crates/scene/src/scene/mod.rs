@@ -536,7 +536,7 @@ pub struct Outputs {
     pub field: Option<FieldGrid>,
     /// A loading cycle.
     pub cycle: Option<Cycle>,
-    /// SVG plots beside the JSON.
+    /// SVG plots beside the JSON and in report.html (default true).
     pub plots: bool,
 }
 

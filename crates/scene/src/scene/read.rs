@@ -921,7 +921,7 @@ fn motion(cx: &Reader<'_>, raw: &RawScene) -> Result<Motion, SceneError> {
 
 fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Outputs, SceneError> {
     let Some(o) = o else {
-        return Ok(Outputs { surface: true, field: None, cycle: None, plots: false });
+        return Ok(Outputs { surface: true, field: None, cycle: None, plots: true });
     };
     // from and to: numbers in the scale's unit, or (scale = "m") lengths with units
     let axis = |v: &Spanned<Vec<crate::raw::SQty>>,
@@ -1017,12 +1017,7 @@ fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Output
             Some(Cycle { amplitude, points })
         }
     };
-    Ok(Outputs {
-        surface: o.surface.unwrap_or(true),
-        field,
-        cycle,
-        plots: o.plots.unwrap_or(false),
-    })
+    Ok(Outputs { surface: o.surface.unwrap_or(true), field, cycle, plots: o.plots.unwrap_or(true) })
 }
 
 fn solver(cx: &Reader<'_>, s: Option<&crate::raw::RawSolver>) -> Result<SolverOptions, SceneError> {
