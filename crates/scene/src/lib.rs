@@ -64,7 +64,8 @@ pub use error::{Check, ErrorKind, Issue, SceneError};
 pub use scene::{
     patch_bounds, Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, History,
     HistoryControl, Indenter, Load, Method, Motion, NormalLoad, NormalSweep, Outputs, Patch,
-    PatchShape, PathSource, Profile, Scene, SceneBuilder, SolverOptions, Source, Substrate,
-    Surface, SurfaceBoundary, DEFAULT_SCENE, MAX_GRID,
+    PatchShape, PathSource, Profile, ProfileFile, RailSide, Scene, SceneBuilder, SolverOptions,
+    Source, Substrate, Surface, SurfaceBoundary, WheelRail, WheelsetPosition, DEFAULT_SCENE,
+    MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};
