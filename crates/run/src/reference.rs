@@ -94,6 +94,7 @@ pub fn of(plan: &Plan, out: &Outcome) -> References {
             RollingModel::Goryacheva { .. } => References::default(),
         },
         Recipe::Contact(r) => contact(r, out),
+        Recipe::WheelRail(_) => References::default(),
     }
 }
 

@@ -533,9 +533,114 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             let z = out.zones.grid.unwrap();
             assert!(z.stick > 0 && z.slip > 0, "{z:?}");
         }
+        "wheel_rail_manchester_a22.toml" => {
+            report.borrow_mut().extend(wheel_rail_checks(name, scene, out));
+        }
         other => panic!("no check for scene {other}: add one"),
     }
     report.into_inner()
+}
+
+/// What every wheel-rail result must meet: the load balance, Coulomb's law per patch, the
+/// contact angle's sign, and the numbers of the library's own solve of the same position;
+/// and against CONTACT's published output for the Manchester position it ships.
+fn wheel_rail_checks(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
+    use stickslip_wheelrail as wr;
+    let stickslip_scene::Geometry::WheelRail(g) = &scene.geometry else { panic!("wheel-rail") };
+    let stickslip_scene::Motion::Wheelset { speed, pitch_rate } = scene.motion else {
+        panic!("a wheelset's motion")
+    };
+    let w = out.wheel_rail.as_ref().expect("wheel_rail in the result");
+    let f = scene.load.friction;
+    let stickslip_scene::NormalLoad::Force(load) = scene.load.normal else { panic!("load") };
+    // Load balance and Coulomb, from the reported patches.
+    let vertical: f64 = w.patches.iter().map(|p| p.fn_ * p.contact_angle.cos()).sum();
+    assert!((vertical - load).abs() <= 1e-6 * load, "{name}: sum Fn cos = {vertical}");
+    for p in &w.patches {
+        assert!(p.fx.hypot(p.fs) <= f * p.fn_ * (1.0 + 1e-9), "{name}: creep force beyond f Fn");
+        assert!(p.coulomb.unwrap() <= 1e-6, "{name}: Coulomb {:?}", p.coulomb);
+        assert!(p.fn_ > 0.0 && p.area > 0.0 && p.pmax > 0.0);
+    }
+    // The library's own solve of the same position: the same numbers.
+    let o = wr::ProfileOptions { unit: g.profile_unit, ..wr::ProfileOptions::default() };
+    let read = |f: &stickslip_scene::ProfileFile, role| {
+        wr::Profile::read(&f.text, &f.name, wr::Format::from_name(&f.name), role, &o).unwrap()
+    };
+    let track =
+        wr::Track::new(read(&g.rail_profile, wr::Role::Rail), g.gauge, g.gauge_height, g.rail_cant)
+            .unwrap();
+    let ws = wr::Wheelset::new(
+        read(&g.wheel_profile, wr::Role::Wheel),
+        g.flange_back_distance,
+        g.flange_back_position,
+        g.wheel_radius,
+    )
+    .unwrap();
+    let steel = stickslip_halfspace::Material::new(209.92e9, 0.28).unwrap();
+    let side =
+        if g.side == stickslip_scene::RailSide::Left { wr::Side::Left } else { wr::Side::Right };
+    let cell = scene.solver.cell.unwrap();
+    let pb = wr::WheelRail::new(side, track, ws, steel, steel, f, (cell[0], cell[1])).unwrap();
+    let pos =
+        wr::Position { lateral: g.position.lateral, yaw: g.position.yaw, roll: g.position.roll };
+    let lib = pb
+        .solve(
+            &pos,
+            &wr::Motion::rolling(speed, pitch_rate.unwrap()),
+            wr::VerticalLoad::Force(load),
+            wr::Tangential::Exact { tolerance: scene.solver.tolerance },
+            &mut wr::Cache::new(),
+        )
+        .unwrap();
+    assert_eq!(lib.patches.len(), w.patches.len());
+    assert_eq!(lib.z_wheelset, w.z_wheelset);
+    assert_eq!(lib.total_on_rail, [w.total_on_rail.fx, w.total_on_rail.fy, w.total_on_rail.fz]);
+    for (a, b) in lib.patches.iter().zip(&w.patches) {
+        assert_eq!(
+            [a.normal_force, a.fx, a.fs, a.mn, a.pmax, a.area, a.contact_angle, a.rail_point[0]],
+            [b.fn_, b.fx, b.fs, b.mn, b.pmax, b.area, b.contact_angle, b.y_rail]
+        );
+        assert_eq!(a.creepage.spin, b.creepage.spin);
+    }
+    // CONTACT's published output for this position (Manchester, left wheel,
+    // position 5): one patch on the tread; CONTACT's force control counts the creep forces'
+    // vertical components too, so its Fn differs from ours by about Fs sin(delta)/cos(delta).
+    let p = &w.patches[0];
+    // CONTACT (its exact theory, 0.2 mm cells): z_ws 0.1530 mm, Fn 1.004e4 N, Fx 546.3 N,
+    // Fs -2961 N, delta 0.0134 rad, y_r 4.027 mm, pmax 465.9 MPa, one patch.
+    assert_eq!(w.patches.len(), 1);
+    assert!(p.contact_angle > 0.0, "the tread contact of a left wheel shifted right tilts +");
+    let fnorm = f * 1.004e4;
+    let diffs = [
+        ((w.z_wheelset * 1e3 - 0.1530).abs(), 5e-3, "z_ws (mm)"),
+        ((p.fn_ / 1.004e4 - 1.0).abs(), 1e-2, "Fn (relative)"),
+        ((p.fx - 546.3).abs() / fnorm, 1e-2, "Fx (of f Fn)"),
+        ((p.fs + 2961.0).abs() / fnorm, 1e-2, "Fs (of f Fn)"),
+        ((p.contact_angle - 0.0134).abs(), 5e-4, "delta (rad)"),
+        ((p.y_rail * 1e3 - 4.027).abs(), 0.1, "y_rail (mm)"),
+        ((p.pmax * 1e-6 / 465.9 - 1.0).abs(), 1e-2, "pmax (relative)"),
+    ];
+    for (d, limit, what) in diffs {
+        assert!(d <= limit, "{name}: {what} differs from CONTACT's by {d:.3e} (limit {limit:.0e})");
+    }
+    let mut lines = vec![format!(
+        "{name}: {} patch(es); z_ws = {:.5} mm; Fn = {:.1} N, Fx = {:.1} N, Fs = {:.1} N, delta = {:.4} rad, y_rail = {:.3} mm, pmax = {:.1} MPa, stick {:.3}",
+        w.patches.len(),
+        w.z_wheelset * 1e3,
+        p.fn_,
+        p.fx,
+        p.fs,
+        p.contact_angle,
+        p.y_rail * 1e3,
+        p.pmax * 1e-6,
+        p.stick_fraction.unwrap_or(f64::NAN)
+    )];
+    lines.push(format!("{name}: vertical balance {:.2e}", (vertical - load).abs() / load));
+    lines.push(format!(
+        "{name}: against CONTACT: {}",
+        diffs.iter().map(|(d, _, w)| format!("{w} {d:.2e}")).collect::<Vec<_>>().join(", ")
+    ));
+    lines
 }
 
 #[test]

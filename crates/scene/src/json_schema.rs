@@ -172,7 +172,15 @@ mod tests {
         let kind = property(&mut v, "geometry.kind").unwrap();
         assert_eq!(
             kind.get("enum").unwrap(),
-            &serde_json::json!(["cylinder", "sphere", "ellipsoid", "punch", "patches", "surface"])
+            &serde_json::json!([
+                "cylinder",
+                "sphere",
+                "ellipsoid",
+                "punch",
+                "patches",
+                "surface",
+                "wheel-rail"
+            ])
         );
         let shape = property(&mut v, "geometry.patches.shape").unwrap().clone();
         assert_eq!(

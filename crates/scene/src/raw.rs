@@ -59,6 +59,9 @@ pub(crate) struct RawScene {
     /// The body above; rigid when the table is absent.
     #[schemars(with = "Option<RawIndenter>")]
     pub indenter: Option<Spanned<RawIndenter>>,
+    /// Wheel-rail: the wheelset's position on the track.
+    #[schemars(with = "Option<RawPosition>")]
+    pub position: Option<Spanned<RawPosition>>,
     /// Normal and tangential loads, friction, moment.
     #[schemars(with = "RawLoad")]
     pub load: Spanned<RawLoad>,
@@ -118,6 +121,50 @@ pub(crate) struct RawGeometry {
     /// Surface: roughness from a file or generated.
     #[schemars(with = "Option<RawRoughness>")]
     pub roughness: Option<Spanned<RawRoughness>>,
+    /// Wheel-rail: "left" or "right" (the left side mirrors the right).
+    #[schemars(with = "Option<String>")]
+    pub side: Option<Spanned<String>>,
+    /// Wheel-rail: the rail profile file (.prr, .ban, or two columns y z), relative to the scene file.
+    #[schemars(with = "Option<String>")]
+    pub rail_profile: Option<Spanned<String>>,
+    /// Wheel-rail: the wheel profile file (.prw, .whl, or two columns y z), relative to the scene file.
+    #[schemars(with = "Option<String>")]
+    pub wheel_profile: Option<Spanned<String>>,
+    /// Wheel-rail: the length unit of the profile files, e.g. "mm" (default) or "m".
+    #[schemars(with = "Option<String>")]
+    pub profile_unit: Option<Spanned<String>>,
+    /// Wheel-rail: the track gauge (length, e.g. "1435 mm").
+    #[schemars(with = "Option<Qty>")]
+    pub gauge: Option<SQty>,
+    /// Wheel-rail: the depth below the track plane at which the gauge is measured (length).
+    #[schemars(with = "Option<Qty>")]
+    pub gauge_height: Option<SQty>,
+    /// Wheel-rail: the rail cant (angle: rad, mrad or deg; default 0).
+    #[schemars(with = "Option<Qty>")]
+    pub rail_cant: Option<SQty>,
+    /// Wheel-rail: the wheelset's flange back distance (length).
+    #[schemars(with = "Option<Qty>")]
+    pub flange_back_distance: Option<SQty>,
+    /// Wheel-rail: the flange back's position in the wheel profile's own y (length).
+    #[schemars(with = "Option<Qty>")]
+    pub flange_back_position: Option<SQty>,
+    /// Wheel-rail: the nominal wheel radius at the wheel profile's origin (length).
+    #[schemars(with = "Option<Qty>")]
+    pub wheel_radius: Option<SQty>,
+}
+
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPosition {
+    /// Lateral displacement of the wheelset along y (length; default 0).
+    #[schemars(with = "Option<Qty>")]
+    pub lateral: Option<SQty>,
+    /// Yaw angle (rad, mrad or deg; default 0).
+    #[schemars(with = "Option<Qty>")]
+    pub yaw: Option<SQty>,
+    /// Roll angle (rad, mrad or deg; default 0).
+    #[schemars(with = "Option<Qty>")]
+    pub roll: Option<SQty>,
 }
 
 // The crowned cylinder's keys (length, crown, end_radius) are part of the format and are
@@ -358,6 +405,10 @@ pub(crate) struct RawMotion {
     /// 3D rolling: the longitudinal, lateral and spin creepages.
     #[schemars(with = "Option<RawCreepage>")]
     pub creepage: Option<Spanned<RawCreepage>>,
+    /// Wheel-rail: the wheelset's angular velocity about its axle (e.g. "-4.35 rad/s");
+    /// default free rolling, -speed / wheel_radius.
+    #[schemars(with = "Option<Qty>")]
+    pub pitch_rate: Option<SQty>,
 }
 
 #[derive(Debug, Deserialize, JsonSchema)]
@@ -430,4 +481,7 @@ pub(crate) struct RawSolver {
     /// The relative tolerance.
     #[schemars(with = "Option<f64>")]
     pub tolerance: Option<Spanned<f64>>,
+    /// Wheel-rail: the element size [along x, across the patch] (lengths, e.g. ["0.2 mm", "0.2 mm"]).
+    #[schemars(with = "Option<Vec<Qty>>")]
+    pub cell: Option<Spanned<Vec<SQty>>>,
 }

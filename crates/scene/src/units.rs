@@ -27,6 +27,8 @@ impl Dim {
     }
     /// No dimension (a pure number).
     pub const NONE: Dim = Dim::new(0.0, 0.0, 0.0);
+    /// Reciprocal time (an angular velocity in rad/s).
+    pub const PER_TIME: Dim = Dim::new(0.0, 0.0, -1.0);
     /// Length (m).
     pub const LENGTH: Dim = Dim::new(0.0, 1.0, 0.0);
     /// Force (N).

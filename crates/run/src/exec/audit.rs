@@ -13,6 +13,8 @@
 //! | tangential resultant | $\lvert h_xh_y\sum \mathbf q_k - \mathbf T\rvert / (fP)$ | as coulomb, plus the normal resultant's |
 //! | moment resultant | moment of the lattice traction about the centre of pressure against M, over the spin scale $f P \bar r$ | as tangential |
 //! | residual | the iterative solver's residual against the requested tolerance | tol |
+//! | load balance | wheel on rail: $\lvert\sum_p F_{n,p}\cos\delta_p - F_z\rvert / F_z$ | [`WHEEL_LOAD_TOLERANCE`] |
+//! | patches | wheel on rail: every patch with $F_n > 0$, area $> 0$, $\lvert\delta\rvert < 90°$ | none fails |
 //! | lattice sampling | $\lvert\lambda - 1\rvert$ of a closed form shown on the lattice | [`SAMPLING_TOLERANCE`] |
 
 use super::outcome::{Audit, Check, Outcome, SurfaceOut};
@@ -31,6 +33,11 @@ use crate::plan::Plan;
 /// and the run is refused with `solver.grid`. Coulomb's law holds on the lattice for any
 /// $0 \le \lambda \le 2$ whatever this limit.
 pub const SAMPLING_TOLERANCE: f64 = 0.25;
+
+/// How far the sum of a wheel's patches' vertical normal-force components may be from the
+/// given vertical wheel load (relative): ten times the wheel-rail solver's load tolerance
+/// ($10^{-7}$).
+pub const WHEEL_LOAD_TOLERANCE: f64 = 1e-6;
 
 struct Builder(Vec<Check>);
 
@@ -63,6 +70,12 @@ fn limits(plan: &Plan) -> (f64, Option<f64>) {
                 })),
             ..
         }) => (tolerance.max(1e-9), Some(*tolerance)),
+        Recipe::WheelRail(r) => match r.tangential {
+            stickslip_wheelrail::Tangential::Exact { tolerance } => {
+                (tolerance.max(1e-9), Some(tolerance))
+            }
+            _ => (1e-9, None),
+        },
         Recipe::Rolling(r) => match r.model {
             RollingModel::Goryacheva { stress, .. } => ((100.0 * stress.tol.rel()).max(1e-9), None),
             RollingModel::Carter(_) => (1e-12, None),
@@ -79,6 +92,7 @@ fn friction_of(plan: &Plan) -> f64 {
             RollingModel::Goryacheva { params, .. } => params.friction(),
         },
         Recipe::Contact(r) => r.friction,
+        Recipe::WheelRail(r) => r.friction,
     }
 }
 
@@ -233,6 +247,35 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
             }
         }
         _ => {}
+    }
+    if let Some(w) = &out.wheel_rail {
+        if f > 0.0 {
+            if let Some(worst) = w.patches.iter().filter_map(|p| p.coulomb).reduce(f64::max) {
+                b.at_most(
+                    "coulomb",
+                    worst,
+                    coulomb_limit,
+                    "max over the patches' contact cells of (|q| - f p)/(f pmax)",
+                );
+            }
+        }
+        if let Some(load) = w.vertical_load {
+            b.at_most(
+                "load balance",
+                (w.normal_vertical - load).abs() / load,
+                WHEEL_LOAD_TOLERANCE,
+                "|sum over the patches of Fn cos(delta) - the vertical wheel load| / the load",
+            );
+        }
+        let contact_angles_ok = w.patches.iter().all(|p| {
+            p.contact_angle.abs() < std::f64::consts::FRAC_PI_2 && p.fn_ > 0.0 && p.area > 0.0
+        });
+        b.at_most(
+            "patches",
+            f64::from(u8::from(!contact_angles_ok)),
+            0.0,
+            "every patch presses the rail (Fn > 0, area > 0) with |contact angle| < 90 deg",
+        );
     }
     let inside = |iv: &[[f64; 2]]| {
         iv.iter().all(|s| {

@@ -7,6 +7,7 @@
 //! |---|---|
 //! | [`Recipe::Line`] | `normal` (2D) → `friction` (2D traction) → `surface` → `field` |
 //! | [`Recipe::Rolling`] | `rolling` (normal and tangential together) |
+//! | [`Recipe::WheelRail`] | `wheel_rail` (contact search, normal contact under the wheel load, creep forces per patch: `stickslip-wheelrail`) |
 //! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) or `roll3d` (3D steady rolling: exact, FASTSIM, Polach) or `history` (a load path, step by step; its final state goes on) → `cycle` → `field` |
 //!
 //! Every stage increments the evaluation counter of the effects it computes
@@ -33,6 +34,7 @@ mod roll3d;
 mod rolling;
 mod surface;
 mod twist;
+mod wheel_rail;
 
 use std::time::Instant;
 
@@ -92,6 +94,7 @@ pub(crate) struct Parts {
     pub cycle: Option<CycleOut>,
     pub history: Option<outcome::HistoryOut>,
     pub load_curve: Option<outcome::LoadCurve>,
+    pub wheel_rail: Option<outcome::WheelRailOut>,
 }
 
 /// Points `lo..=hi`, evenly spaced; the midpoint when `n == 1`.
@@ -192,6 +195,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         Recipe::Line(r) => line(r, &mut cx),
         Recipe::Rolling(r) => rolling::run(r, &mut cx),
         Recipe::Contact(r) => contact(r, &mut cx),
+        Recipe::WheelRail(r) => wheel_rail::run(r, &mut cx),
     }
     .map_err(|e| locate(plan, e))?;
     let mut effects =
@@ -236,6 +240,7 @@ pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError
         history: parts.history,
         load_curve: parts.load_curve,
         punch: cx.punch.take(),
+        wheel_rail: parts.wheel_rail,
         audit: Default::default(),
         evaluations: cx.ev,
         notes: std::mem::take(&mut cx.notes),
@@ -282,6 +287,7 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
         cycle: None,
         history: None,
         load_curve: None,
+        wheel_rail: None,
     })
 }
 
@@ -380,5 +386,6 @@ fn contact_parts(
         cycle,
         history: None,
         load_curve,
+        wheel_rail: None,
     })
 }

@@ -159,5 +159,6 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
         cycle: None,
         history: None,
         load_curve: None,
+        wheel_rail: None,
     })
 }

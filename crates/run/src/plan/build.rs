@@ -49,6 +49,23 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
         (Geometry::Punch { half_width }, Motion::Static) => {
             (Recipe::Line(line_recipe(scene, &bodies, LineBody::Punch(*half_width))?), None)
         }
+        (Geometry::WheelRail(w), Motion::Static | Motion::Wheelset { .. }) => {
+            (Recipe::WheelRail(Box::new(wheel_rail_recipe(scene, &bodies, w)?)), None)
+        }
+        (_, Motion::Wheelset { .. }) => {
+            return Err(unsupported(
+                "motion.pitch_rate",
+                "a wheelset's motion needs a wheel on a rail",
+                "use geometry.kind = \"wheel-rail\"",
+            ))
+        }
+        (Geometry::WheelRail(_), _) => {
+            return Err(unsupported(
+                "motion.kind",
+                "a wheel on a rail rolls with motion.speed and motion.pitch_rate",
+                "[motion] kind = \"rolling\", speed = \"2 m/s\", pitch_rate = \"-4.35 rad/s\"",
+            ))
+        }
         (_, Motion::Rolling { .. }) => {
             return Err(unsupported(
                 "geometry.kind",
@@ -104,6 +121,119 @@ pub(crate) fn build(scene: &Scene) -> Result<Plan, Issue> {
         cost,
         notes,
         recipe,
+    })
+}
+
+/// A wheel on its rail: the profiles read and checked, the track and wheelset placed, the
+/// load, the motion and the tangential method resolved.
+fn wheel_rail_recipe(
+    scene: &Scene,
+    bodies: &Bodies,
+    w: &stickslip_scene::WheelRail,
+) -> Result<crate::plan::recipe::WheelRailRecipe, Issue> {
+    use stickslip_wheelrail as wr;
+    let wr_err = |key: &str, e: wr::Error, hint: &str| {
+        Issue::new(ErrorKind::OutOfRange, key, e.to_string()).hint(hint.to_string())
+    };
+    if !matches!(scene.substrate, Substrate::Homogeneous(_)) {
+        return Err(unsupported(
+            "substrate.model",
+            "a wheel on a rail is solved for homogeneous elastic bodies",
+            "substrate.model = \"homogeneous\" (the rail), e.g. e = \"210 GPa\", nu = 0.28",
+        ));
+    }
+    let l = &scene.load;
+    if l.tangential != 0.0 || l.moment != 0.0 || l.sliding || l.history.is_some() {
+        return Err(unsupported(
+            "load",
+            "a wheel on a rail takes no tangential load, moment, sliding or load path: its creep forces follow from the motion",
+            "remove load.tangential, load.moment, load.sliding and [load.history]; set [motion] speed and pitch_rate",
+        ));
+    }
+    let options = wr::ProfileOptions { unit: w.profile_unit, ..wr::ProfileOptions::default() };
+    let read = |f: &stickslip_scene::ProfileFile, role, key: &str| {
+        wr::Profile::read(&f.text, &f.name, wr::Format::from_name(&f.name), role, &options).map_err(|e| {
+            Issue::new(ErrorKind::OutOfRange, key, format!("the profile is refused: {e}"))
+                .hint("check the file named in the message at its line; geometry.profile_unit gives the file's length unit (default mm); a rail profile (.prr, .ban) goes in rail_profile, a wheel profile (.prw, .whl) in wheel_profile")
+        })
+    };
+    let rail = read(&w.rail_profile, wr::Role::Rail, "geometry.rail_profile")?;
+    let wheel = read(&w.wheel_profile, wr::Role::Wheel, "geometry.wheel_profile")?;
+    let track = wr::Track::new(rail, w.gauge, w.gauge_height, w.rail_cant).map_err(|e| {
+        wr_err("geometry.gauge_height", e, "the rail's gauge face must reach gauge_height below its top (14 mm for standard track); check gauge, gauge_height and rail_cant")
+    })?;
+    let wheelset = wr::Wheelset::new(wheel, w.flange_back_distance, w.flange_back_position, w.wheel_radius)
+        .map_err(|e| wr_err("geometry.flange_back_position", e, "flange_back_position is the flange back's y in the wheel profile's own coordinates (e.g. -70 mm for S1002); check flange_back_distance and wheel_radius"))?;
+    let side = match w.side {
+        stickslip_scene::RailSide::Left => wr::Side::Left,
+        stickslip_scene::RailSide::Right => wr::Side::Right,
+    };
+    let cell = scene.solver.cell.map_or((2e-4, 2e-4), |[a, b]| (a, b));
+    let load = match l.normal {
+        NormalLoad::Force(p) => wr::VerticalLoad::Force(p),
+        NormalLoad::Approach(d) => wr::VerticalLoad::Approach(d),
+        _ => {
+            return Err(unsupported(
+                "load.normal",
+                "a wheel on a rail takes the vertical wheel load or the approach",
+                "load.normal = \"10 kN\" or load.approach = \"50 um\"",
+            ))
+        }
+    };
+    let motion = match scene.motion {
+        Motion::Wheelset { speed, pitch_rate } => Some(match pitch_rate {
+            Some(omega) => wr::Motion::rolling(speed, omega),
+            None => wr::Motion::free_rolling(speed, w.wheel_radius),
+        }),
+        _ => None,
+    };
+    let tangential = match (motion, l.friction > 0.0, scene.solver.method) {
+        (None, _, _) | (_, false, _) => wr::Tangential::None,
+        (Some(_), true, Method::Fastsim) => wr::Tangential::Fastsim,
+        (Some(_), true, Method::Auto | Method::Fast) => {
+            wr::Tangential::Exact { tolerance: scene.solver.tolerance.clamp(1e-10, 1e-2) }
+        }
+        (Some(_), true, m) => {
+            return Err(unsupported(
+                "solver.method",
+                format!("solver.method = {m:?} does not solve a wheel on a rail"),
+                "solver.method = \"auto\" (the exact steady-rolling theory) or \"fastsim\"",
+            ))
+        }
+    };
+    // The problem is built once here so that its refusals (cell, friction, materials, the
+    // rail's placement) come before any solving.
+    wr::WheelRail::new(
+        side,
+        track.clone(),
+        wheelset.clone(),
+        bodies.substrate,
+        bodies.indenter,
+        l.friction,
+        cell,
+    )
+    .map_err(|e| {
+        wr_err(
+            "solver.cell",
+            e,
+            "cell = [along x, across], two lengths > 0; friction >= 0; at most one rigid body",
+        )
+    })?;
+    Ok(crate::plan::recipe::WheelRailRecipe {
+        side,
+        track,
+        wheelset,
+        bodies: *bodies,
+        friction: l.friction,
+        cell,
+        position: wr::Position {
+            lateral: w.position.lateral,
+            yaw: w.position.yaw,
+            roll: w.position.roll,
+        },
+        motion,
+        load,
+        tangential,
     })
 }
 
@@ -644,6 +774,7 @@ impl Recipe {
                 LineNormal::Punch { .. } => Technique::FlatPunch,
             },
             Recipe::Rolling(r) => r.model.technique(),
+            Recipe::WheelRail(_) => Technique::SurfaceContact,
             Recipe::Contact(r) => match r.normal {
                 ContactNormal::Sphere { .. } => Technique::HertzSphere,
                 ContactNormal::Ellipse { .. } => Technique::HertzEllipse,
@@ -663,6 +794,11 @@ impl Recipe {
                 LineFriction::GradedPartialSlip { .. } => Technique::GradedPartialSlip,
             }),
             Recipe::Rolling(r) => Some(r.model.technique()),
+            Recipe::WheelRail(r) => match r.tangential {
+                stickslip_wheelrail::Tangential::Fastsim => Some(Technique::Fastsim),
+                stickslip_wheelrail::Tangential::None => None,
+                _ => Some(Technique::SteadyRolling),
+            },
             Recipe::Contact(r) => match (&r.history, r.tangential) {
                 (Some(_), _) => Some(Technique::LoadHistory),
                 (None, t) => t.map(|t| t.technique()),
@@ -723,7 +859,10 @@ fn effects(
     let mut effects: Vec<EffectPlan> = Vec::with_capacity(8);
     effects.push(on(E::NormalContact, "always".to_string(), recipe.normal_technique()));
 
-    let rolling = matches!(scene.motion, Motion::Rolling { .. } | Motion::RollingCreepage { .. });
+    let rolling = matches!(
+        scene.motion,
+        Motion::Rolling { .. } | Motion::RollingCreepage { .. } | Motion::Wheelset { .. }
+    );
     let f = l.friction;
     let friction_cause = if l.history.is_some() {
         Some("a load path ([load.history])")
@@ -812,6 +951,34 @@ fn effects(
     }
 
     match (recipe, scene.motion) {
+        (Recipe::WheelRail(r), Motion::Wheelset { speed, .. }) => {
+            let omega = r.motion.map_or(0.0, |m| m.pitch_rate);
+            let (method, t) = match r.tangential {
+                stickslip_wheelrail::Tangential::Fastsim => {
+                    ("FASTSIM (solver.method = \"fastsim\")".to_string(), Technique::Fastsim)
+                }
+                stickslip_wheelrail::Tangential::Exact { tolerance } => (
+                    format!("the exact steady-rolling theory at relative tolerance {tolerance:e}"),
+                    Technique::SteadyRolling,
+                ),
+                _ => ("none".to_string(), Technique::SteadyRolling),
+            };
+            if !matches!(r.tangential, stickslip_wheelrail::Tangential::None) {
+                effects.push(on(
+                    E::Rolling,
+                    format!("a wheelset rolling at V = {speed} m/s with pitch rate {omega} rad/s: each patch's creepages (longitudinal, lateral, spin) from the motion, the position and the patch's contact angle and rolling radius; creep forces by {method}"),
+                    t,
+                ));
+            } else {
+                effects.push(off(
+                    E::Rolling,
+                    "friction coefficient is 0: normal contact only".to_string(),
+                ));
+            }
+            if !bodies.identical {
+                notes.push("wheel-rail patches are solved as quasi-identical bodies: the normal-tangential coupling (Dundurs beta) is neglected".to_string());
+            }
+        }
         (Recipe::Rolling(r), Motion::Rolling { speed, creep }) => effects.push(on(
             E::Rolling,
             format!("rolling at w = {speed} m/s, creep {creep}"),

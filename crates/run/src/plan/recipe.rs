@@ -25,6 +25,35 @@ pub enum Recipe {
     Rolling(RollingRecipe),
     /// A static 3D contact (sphere, ellipse, patches) sampled or solved on a lattice.
     Contact(ContactRecipe),
+    /// One wheel on its rail from profiles: contact search, each patch's normal contact
+    /// under the vertical wheel load, its creepages and creep forces (`stickslip-wheelrail`).
+    WheelRail(Box<WheelRailRecipe>),
+}
+
+/// A wheel on its rail, resolved: the profiles read and checked, the track and the wheelset
+/// placed, the materials, the position, the motion and the methods.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WheelRailRecipe {
+    /// The rail the wheel runs on.
+    pub side: stickslip_wheelrail::Side,
+    /// The rail on the track.
+    pub track: stickslip_wheelrail::Track,
+    /// The wheel on the wheelset.
+    pub wheelset: stickslip_wheelrail::Wheelset,
+    /// Rail (substrate) and wheel (indenter).
+    pub bodies: Bodies,
+    /// Friction coefficient.
+    pub friction: f64,
+    /// Element size (along x, across the patch), m.
+    pub cell: (f64, f64),
+    /// The wheelset's position.
+    pub position: stickslip_wheelrail::Position,
+    /// The wheelset's motion (None: normal contact only).
+    pub motion: Option<stickslip_wheelrail::Motion>,
+    /// The vertical wheel load or the approach.
+    pub load: stickslip_wheelrail::VerticalLoad,
+    /// The tangential theory of every patch.
+    pub tangential: stickslip_wheelrail::Tangential,
 }
 
 /// The two bodies of a scene, resolved once when it is planned: every check, recipe and

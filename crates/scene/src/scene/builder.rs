@@ -149,7 +149,7 @@ impl SceneBuilder {
 
     /// The method, grid side and relative tolerance.
     pub fn solver(mut self, method: Method, grid: usize, tolerance: f64) -> Self {
-        self.scene.solver = SolverOptions { method, grid, tolerance };
+        self.scene.solver = SolverOptions { method, grid, tolerance, cell: None };
         self
     }
 

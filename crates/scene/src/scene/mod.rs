@@ -47,6 +47,69 @@ pub enum Geometry {
     /// Any surface: the initial gap on a lattice from a profile and roughness (3D); the
     /// pressure follows from the normal-contact solver.
     Surface(Surface),
+    /// One wheel of a wheelset on its rail, both given by measured or design profiles
+    /// (3D; CONTACT's track coordinates). The rail is the substrate, the wheel the indenter.
+    WheelRail(WheelRail),
+}
+
+/// A wheel on its rail from profile files (`[geometry] kind = "wheel-rail"` and
+/// `[position]`). Lengths in m, angles in rad.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WheelRail {
+    /// Which rail: the left side is the mirror image of the right.
+    pub side: RailSide,
+    /// The rail profile file.
+    pub rail_profile: ProfileFile,
+    /// The wheel profile file.
+    pub wheel_profile: ProfileFile,
+    /// Length of one profile-file unit (m).
+    pub profile_unit: f64,
+    /// Track gauge (m).
+    pub gauge: f64,
+    /// Depth below the track plane at which the gauge is measured (m).
+    pub gauge_height: f64,
+    /// Rail cant (rad).
+    pub rail_cant: f64,
+    /// Flange back distance of the wheelset (m).
+    pub flange_back_distance: f64,
+    /// The flange back's position in the wheel profile's own y (m).
+    pub flange_back_position: f64,
+    /// Nominal wheel radius at the wheel profile's origin (m).
+    pub wheel_radius: f64,
+    /// The wheelset's position (`[position]`).
+    pub position: WheelsetPosition,
+}
+
+/// Left or right rail.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RailSide {
+    /// The left rail (looking in the rolling direction).
+    Left,
+    /// The right rail.
+    Right,
+}
+
+/// A profile file as named in the scene, with its text (read when the scene is read; the
+/// planner parses and checks it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProfileFile {
+    /// The name as written in the scene.
+    pub name: String,
+    /// The path it was read from (relative names resolved against the scene's folder).
+    pub path: PathBuf,
+    /// The file's text.
+    pub text: std::sync::Arc<str>,
+}
+
+/// The wheelset's position on the track.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WheelsetPosition {
+    /// Lateral displacement along y (m).
+    pub lateral: f64,
+    /// Yaw angle (rad).
+    pub yaw: f64,
+    /// Roll angle (rad).
+    pub roll: f64,
 }
 
 /// A surface given on a lattice.
@@ -492,6 +555,15 @@ pub enum Motion {
         /// Spin creepage phi (1/m).
         spin: f64,
     },
+    /// A wheelset rolling along the track (`geometry.kind = "wheel-rail"`): the creepages of
+    /// each patch follow from the speed, the pitch rate, the position and the patch.
+    Wheelset {
+        /// Forward speed V (m/s), > 0.
+        speed: f64,
+        /// Angular velocity about the axle (rad/s); None: free rolling at the nominal
+        /// radius, -V / r0.
+        pitch_rate: Option<f64>,
+    },
 }
 
 /// A subsurface grid, in units of `scale`: in 2D x and depth y; in 3D a box of x, y and
@@ -578,6 +650,8 @@ pub struct SolverOptions {
     pub grid: usize,
     /// Requested relative tolerance.
     pub tolerance: f64,
+    /// The element size [along x, across] of wheel-rail patches (m), when given.
+    pub cell: Option<[f64; 2]>,
 }
 
 /// A validated scene. Every quantity is SI.
@@ -678,7 +752,7 @@ impl Source {
 impl Default for SolverOptions {
     /// `auto`, 32 elements per side, relative tolerance 1e-10.
     fn default() -> Self {
-        SolverOptions { method: Method::Auto, grid: 32, tolerance: 1e-10 }
+        SolverOptions { method: Method::Auto, grid: 32, tolerance: 1e-10, cell: None }
     }
 }
 

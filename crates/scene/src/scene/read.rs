@@ -27,6 +27,7 @@ use crate::units::{parse_quantity, Dim};
 mod material;
 pub(crate) mod schema;
 mod surface;
+mod wheel_rail;
 
 struct Reader<'a> {
     src: &'a str,
@@ -142,7 +143,13 @@ pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError
     let substrate = substrate(&cx, &raw)?;
     let indenter = indenter(&cx, &raw)?;
     let load = load(&cx, &raw, &geometry)?;
-    let motion = motion(&cx, &raw)?;
+    let wheel = matches!(geometry, Geometry::WheelRail(_));
+    if let (false, Some(p)) = (wheel, &raw.position) {
+        return Err(cx
+            .err(ErrorKind::Schema, "position", Some(p.span()), "`[position]` is given but the geometry is not a wheel on a rail")
+            .hint("[position] (lateral, yaw, roll) places a wheelset: use it with geometry.kind = \"wheel-rail\", or remove it"));
+    }
+    let motion = motion(&cx, &raw, wheel)?;
     let outputs = outputs(&cx, raw.outputs.as_ref())?;
     let solver = solver(&cx, raw.solver.as_ref())?;
     let interface = match &raw.interface {
@@ -188,7 +195,7 @@ fn geometry(cx: &Reader<'_>, raw: &RawScene) -> Result<Geometry, SceneError> {
     let kind = cx.choice(
         &g.kind,
         "geometry.kind",
-        &["cylinder", "sphere", "ellipsoid", "punch", "patches", "surface"],
+        &["cylinder", "sphere", "ellipsoid", "punch", "patches", "surface", "wheel-rail"],
     )?;
     Ok(match kind {
         "cylinder" | "sphere" => {
@@ -231,6 +238,7 @@ fn geometry(cx: &Reader<'_>, raw: &RawScene) -> Result<Geometry, SceneError> {
             }
         }
         "surface" => Geometry::Surface(surface::surface(cx, g, gspan)?),
+        "wheel-rail" => Geometry::WheelRail(wheel_rail::wheel_rail(cx, g, gspan, raw)?),
         _ => {
             let list = cx.required(&g.patches, "geometry.patches", gspan, "a list of patches")?;
             cx.record("geometry.patches", list.span());
@@ -837,9 +845,14 @@ fn history_file(
     Ok((control, tangential, n, m, Some(PathSource { file: table.path, lines: table.lines })))
 }
 
-fn motion(cx: &Reader<'_>, raw: &RawScene) -> Result<Motion, SceneError> {
+fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Motion, SceneError> {
     let Some(m) = &raw.motion else { return Ok(Motion::Static) };
     let mr = m.get_ref();
+    if let (false, Some(p)) = (wheel, &mr.pitch_rate) {
+        return Err(cx
+            .err(ErrorKind::Schema, "motion.pitch_rate", Some(p.span()), "`pitch_rate` is given but the geometry is not a wheel on a rail")
+            .hint("pitch_rate is a wheelset's angular velocity about its axle (geometry.kind = \"wheel-rail\"); 3D rolling of other bodies takes motion.creepage"));
+    }
     let rolling_key = mr
         .speed
         .as_ref()
@@ -874,6 +887,22 @@ fn motion(cx: &Reader<'_>, raw: &RawScene) -> Result<Motion, SceneError> {
                 "the rolling speed w, e.g. speed = \"10 cm/s\"",
             )?;
             let speed = cx.qty(sp, "motion.speed", Dim::SPEED, "speed")?;
+            if wheel {
+                if let Some(c) =
+                    mr.creepage.as_ref().map(|c| c.span()).or(mr.creep.as_ref().map(|c| c.span()))
+                {
+                    return Err(cx
+                        .err(ErrorKind::Unsupported, "motion.creepage", Some(c), "creepages given directly are not taken for a wheel on a rail")
+                        .hint("the creepages of each patch follow from motion.speed, motion.pitch_rate and [position]: remove motion.creepage (or motion.creep)"));
+                }
+                let pitch_rate = match &mr.pitch_rate {
+                    None => None,
+                    Some(p) => {
+                        Some(cx.qty(p, "motion.pitch_rate", Dim::PER_TIME, "angular velocity")?)
+                    }
+                };
+                return Ok(Motion::Wheelset { speed, pitch_rate });
+            }
             if let Some(cr) = &mr.creepage {
                 if let Some(c) = &mr.creep {
                     return Err(cx
@@ -1050,6 +1079,15 @@ fn solver(cx: &Reader<'_>, s: Option<&crate::raw::RawSolver>) -> Result<SolverOp
     }
     if let Some(t) = &s.tolerance {
         out.tolerance = cx.num(t, "solver.tolerance");
+    }
+    if let Some(c) = &s.cell {
+        out.cell = Some(cx.pair(
+            c,
+            "solver.cell",
+            Dim::LENGTH,
+            "length",
+            "cell = [along x, across the patch], e.g. [\"0.2 mm\", \"0.2 mm\"]",
+        )?);
     }
     Ok(out)
 }

@@ -20,6 +20,14 @@ pub(crate) fn validate(scene: &Scene) -> Result<(), Issue> {
     substrate(&scene.substrate)?;
     indenter(&scene.indenter)?;
     load(scene)?;
+    if scene.solver.cell.is_some() && !matches!(scene.geometry, Geometry::WheelRail(_)) {
+        return Err(Issue::new(
+            ErrorKind::Schema,
+            "solver.cell",
+            "`solver.cell` sizes the patches of a wheel on a rail; this geometry takes solver.grid",
+        )
+        .hint("remove solver.cell, or use solver.grid = elements per side"));
+    }
     history(scene)?;
     motion(scene)?;
     outputs(&scene.outputs, scene.geometry.is_2d())?;
@@ -146,6 +154,29 @@ fn geometry(g: &Geometry) -> Result<(), Issue> {
         }
         Geometry::Patches(ps) => patches(ps)?,
         Geometry::Surface(s) => surface(s)?,
+        Geometry::WheelRail(w) => wheel_rail(w)?,
+    }
+    Ok(())
+}
+
+fn wheel_rail(w: &super::WheelRail) -> Result<(), Issue> {
+    positive("geometry.profile_unit", w.profile_unit, "length unit")?;
+    positive("geometry.gauge", w.gauge, "gauge")?;
+    finite("geometry.gauge_height", w.gauge_height)?;
+    positive("geometry.flange_back_distance", w.flange_back_distance, "flange back distance")?;
+    finite("geometry.flange_back_position", w.flange_back_position)?;
+    positive("geometry.wheel_radius", w.wheel_radius, "wheel radius")?;
+    finite("position.lateral", w.position.lateral)?;
+    let quarter = std::f64::consts::FRAC_PI_4;
+    for (key, v) in [
+        ("geometry.rail_cant", w.rail_cant),
+        ("position.yaw", w.position.yaw),
+        ("position.roll", w.position.roll),
+    ] {
+        if !(v.is_finite() && v.abs() < quarter) {
+            return Err(Issue::new(ErrorKind::OutOfRange, key, format!("angle {v} rad is not allowed"))
+                .hint("a finite angle below 45 deg in size; write it with its unit, e.g. \"4.8 mrad\" (rail cants are about 1:40, 25 mrad; yaw and roll a few mrad)"));
+        }
     }
     Ok(())
 }
@@ -423,7 +454,15 @@ fn load(scene: &Scene) -> Result<(), Issue> {
             )
             .hint("normal = \"10 N\" (force control) or approach = \"2 um\" (displacement control)"))
         }
-        (Geometry::Surface(_), NormalLoad::Approach(d)) => {
+        (Geometry::WheelRail(_), NormalLoad::HalfWidth(_)) => {
+            return Err(Issue::new(
+                ErrorKind::Schema,
+                "load.half_width",
+                "a wheel on a rail takes the vertical wheel load or the approach, not a half-width",
+            )
+            .hint("normal = \"10 kN\" (the vertical wheel load) or approach = \"50 um\""))
+        }
+        (Geometry::Surface(_) | Geometry::WheelRail(_), NormalLoad::Approach(d)) => {
             within("load.approach", d, &ranges::SMALL_LENGTH)?;
         }
         (_, NormalLoad::Approach(_)) => {
@@ -650,6 +689,18 @@ fn history(scene: &Scene) -> Result<(), Issue> {
 }
 
 fn motion(scene: &Scene) -> Result<(), Issue> {
+    if let Motion::Wheelset { speed, pitch_rate } = scene.motion {
+        positive("motion.speed", speed, "speed")?;
+        if let Some(w) = pitch_rate {
+            finite("motion.pitch_rate", w)?;
+        }
+    }
+    if matches!(scene.geometry, Geometry::WheelRail(_))
+        && !matches!(scene.motion, Motion::Wheelset { .. } | Motion::Static)
+    {
+        return Err(Issue::new(ErrorKind::Schema, "motion.kind", "a wheel on a rail takes motion.kind = \"rolling\" with speed and pitch_rate")
+            .hint("[motion] kind = \"rolling\", speed = \"2 m/s\", pitch_rate = \"-4.35 rad/s\" (or leave [motion] out for normal contact only)"));
+    }
     if let Motion::RollingCreepage { speed, longitudinal, lateral, spin } = scene.motion {
         within("motion.speed", speed, &ranges::SPEED)?;
         for (key, v) in [
@@ -787,6 +838,14 @@ fn solver(s: &SolverOptions) -> Result<(), Issue> {
             format!("tolerance {t} is not allowed"),
         )
         .hint("a relative tolerance in (0, 1), e.g. 1e-10"));
+    }
+    if let Some([hx, hs]) = s.cell {
+        for v in [hx, hs] {
+            if !(v.is_finite() && v > 0.0 && v <= 0.1) {
+                return Err(Issue::new(ErrorKind::OutOfRange, "solver.cell", format!("element size {v} m is not allowed"))
+                    .hint("two lengths > 0, about a tenth of the patch's semi-axes, e.g. cell = [\"0.2 mm\", \"0.2 mm\"]"));
+            }
+        }
     }
     Ok(())
 }

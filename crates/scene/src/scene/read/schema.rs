@@ -107,7 +107,18 @@ static ROUGHNESS: Table = Table {
 
 static GEOMETRY: Table = Table {
     fields: &[
-        req("kind", Kind::Str(&["cylinder", "sphere", "ellipsoid", "punch", "patches", "surface"])),
+        req(
+            "kind",
+            Kind::Str(&[
+                "cylinder",
+                "sphere",
+                "ellipsoid",
+                "punch",
+                "patches",
+                "surface",
+                "wheel-rail",
+            ]),
+        ),
         f("boundary", Kind::Str(&["free", "periodic"])),
         f("size", Kind::QtyArray("[\"4 mm\", \"4 mm\"]")),
         f("cells", Kind::NumArray("[256, 256]")),
@@ -118,6 +129,24 @@ static GEOMETRY: Table = Table {
         f("radii", Kind::QtyArray("[\"20 mm\", \"10 mm\"]")),
         f("half_width", Kind::Qty("\"5 mm\"")),
         f("patches", Kind::TableArray(&PATCH)),
+        f("side", Kind::Str(&["left", "right"])),
+        f("rail_profile", Kind::Str(&[])),
+        f("wheel_profile", Kind::Str(&[])),
+        f("profile_unit", Kind::Str(&[])),
+        f("gauge", Kind::Qty("\"1435 mm\"")),
+        f("gauge_height", Kind::Qty("\"14 mm\"")),
+        f("rail_cant", Kind::Qty("\"25 mrad\"")),
+        f("flange_back_distance", Kind::Qty("\"1360 mm\"")),
+        f("flange_back_position", Kind::Qty("\"-70 mm\"")),
+        f("wheel_radius", Kind::Qty("\"460 mm\"")),
+    ],
+};
+
+static POSITION: Table = Table {
+    fields: &[
+        f("lateral", Kind::Qty("\"2 mm\"")),
+        f("yaw", Kind::Qty("\"4.8 mrad\"")),
+        f("roll", Kind::Qty("\"-0.1128 mrad\"")),
     ],
 };
 
@@ -185,6 +214,7 @@ static MOTION: Table = Table {
         f("speed", Kind::Qty("\"10 cm/s\"")),
         f("creep", Kind::Num),
         f("creepage", Kind::Table(&CREEPAGE)),
+        f("pitch_rate", Kind::Qty("\"-4.35 rad/s\"")),
     ],
 };
 
@@ -224,6 +254,7 @@ static SOLVER: Table = Table {
         ),
         f("grid", Kind::Int),
         f("tolerance", Kind::Num),
+        f("cell", Kind::QtyArray("[\"0.2 mm\", \"0.2 mm\"]")),
     ],
 };
 
@@ -237,6 +268,7 @@ static TOP: Table = Table {
         req("geometry", Kind::Table(&GEOMETRY)),
         req("substrate", Kind::Table(&SUBSTRATE)),
         f("indenter", Kind::Table(&INDENTER)),
+        f("position", Kind::Table(&POSITION)),
         req("load", Kind::Table(&LOAD)),
         f("motion", Kind::Table(&MOTION)),
         f("outputs", Kind::Table(&OUTPUTS)),
@@ -246,9 +278,10 @@ static TOP: Table = Table {
 };
 
 /// Every table of the format with its dotted name, to say where a misplaced key belongs.
-fn tables() -> [(&'static str, &'static Table); 14] {
+fn tables() -> [(&'static str, &'static Table); 15] {
     [
         ("geometry", &GEOMETRY),
+        ("position", &POSITION),
         ("geometry.profile", &PROFILE),
         ("geometry.roughness", &ROUGHNESS),
         ("geometry.patches", &PATCH),

@@ -1,0 +1,198 @@
+//! A wheel on its rail: one call of `stickslip-wheelrail` (placement, contact search, each
+//! patch's normal contact under the vertical wheel load, creepages and creep forces), its
+//! patches reported in result.json's `wheel_rail`.
+
+use super::outcome::{
+    ContactOut, CreepageOut, Field, Forces, PatchLatticeOut, RigidOut, TangentialSolveOut,
+    TrackForce, WheelRailOut, WheelRailPatchOut, Zones,
+};
+use super::{lattice, solver_err, Ctx, Parts};
+use crate::plan::recipe::WheelRailRecipe;
+use stickslip_scene::{ErrorKind, SceneError};
+use stickslip_wheelrail as wr;
+
+/// The wheel-rail library's refusal as a scene error on the key a user changes.
+fn refusal(e: wr::Error) -> SceneError {
+    match e {
+        wr::Error::NoContact { .. } => SceneError::new(ErrorKind::Impossible, e.to_string())
+            .key("position.lateral")
+            .hint("the profiles are placed apart: check geometry.gauge, flange_back_distance, flange_back_position, profile_unit and the sides of the profile files"),
+        wr::Error::FlangeClimb { .. } => SceneError::new(ErrorKind::Impossible, e.to_string())
+            .key("position.lateral")
+            .hint("reduce position.lateral (or the yaw): the wheel has climbed the rail's flange"),
+        wr::Error::NotConverged { .. } => SceneError::new(ErrorKind::Solver, e.to_string())
+            .key("load.normal")
+            .hint("the vertical load could not be met; try load.approach, or a different load"),
+        wr::Error::OutOfDomain { .. } => SceneError::new(ErrorKind::OutOfRange, e.to_string())
+            .key("position")
+            .hint("check [position] and [motion]"),
+        e => solver_err("the wheel-rail solve", e),
+    }
+}
+
+/// Solve the wheel on its rail.
+pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneError> {
+    cx.progress("wheel-rail", 0, 1);
+    let pb = wr::WheelRail::new(
+        r.side,
+        r.track.clone(),
+        r.wheelset.clone(),
+        r.bodies.substrate,
+        r.bodies.indenter,
+        r.friction,
+        r.cell,
+    )
+    .map_err(refusal)?;
+    let motion = r.motion.unwrap_or_else(|| wr::Motion::rolling(1.0, 0.0));
+    let sol = pb
+        .solve(&r.position, &motion, r.load, r.tangential, &mut wr::Cache::new())
+        .map_err(refusal)?;
+    cx.progress("wheel-rail", 1, 1);
+    if sol.patches.is_empty() {
+        return Err(solver_err("the wheel-rail solve", "no contact patch was found"));
+    }
+    let f = r.friction;
+    let mut patches = Vec::with_capacity(sol.patches.len());
+    let (mut iterations, mut residual, mut elements) = (0usize, 0.0f64, 0usize);
+    for p in &sol.patches {
+        let coulomb = p.rolling.as_ref().filter(|_| f > 0.0).map(|s| {
+            s.pressure
+                .iter()
+                .zip(s.qx.iter().zip(&s.qy))
+                .map(|(&pk, (&qx, &qy))| (qx.hypot(qy) - f * pk) / (f * p.pmax))
+                .fold(f64::NEG_INFINITY, f64::max)
+        });
+        let tangential = p.rolling.as_ref().map(|s| {
+            iterations += s.info.iterations;
+            residual = residual.max(s.info.residual);
+            TangentialSolveOut { iterations: s.info.iterations, residual: s.info.residual }
+        });
+        elements += p.lattice.nx * p.lattice.ns;
+        patches.push(WheelRailPatchOut {
+            y_rail: p.rail_point[0],
+            z_rail: p.rail_point[1],
+            y_wheel: p.wheel_point[0],
+            z_wheel: p.wheel_point[1],
+            reference: p.reference,
+            contact_angle: p.contact_angle,
+            rolling_radius: p.rolling_radius,
+            creepage: CreepageOut {
+                longitudinal: p.creepage.longitudinal,
+                lateral: p.creepage.lateral,
+                spin: p.creepage.spin,
+            },
+            fn_: p.normal_force,
+            fx: p.fx,
+            fs: p.fs,
+            mn: p.mn,
+            pmax: p.pmax,
+            area: p.area,
+            stick_fraction: p.stick_fraction,
+            force_on_rail: TrackForce {
+                fx: p.force_on_rail[0],
+                fy: p.force_on_rail[1],
+                fz: p.force_on_rail[2],
+            },
+            contact_cells: p.contact_cells,
+            lattice: PatchLatticeOut {
+                nx: p.lattice.nx,
+                ns: p.lattice.ns,
+                hx: p.lattice.hx,
+                hs: p.lattice.hs,
+                origin: [p.lattice.origin.0, p.lattice.origin.1],
+            },
+            tangential,
+            coulomb,
+        });
+    }
+    cx.iterations = iterations + sol.info.normal_iterations;
+    cx.inner_iterations = sol.info.normal_iterations;
+    cx.residual = residual;
+    cx.elements = elements;
+    cx.solve_seconds = sol.info.total_seconds;
+    cx.ev.normal_contact += 1;
+    if !matches!(r.tangential, wr::Tangential::None) {
+        cx.ev.rolling += 1;
+        cx.ev.friction += 1;
+    }
+    // The contact of result.json's `contact`: the half-lengths along x and across of the
+    // patch carrying the largest normal force (its contact cells' extent), the largest peak
+    // pressure, the sum of the normal forces and of the areas.
+    let main = sol
+        .patches
+        .iter()
+        .max_by(|a, b| a.normal_force.total_cmp(&b.normal_force))
+        .ok_or_else(|| solver_err("the wheel-rail solve", "no patch"))?;
+    let n = &main.normal;
+    let (mut i0, mut i1, mut j0, mut j1) = (usize::MAX, 0usize, usize::MAX, 0usize);
+    for j in 0..n.ny {
+        for i in 0..n.nx {
+            if n.contact[j * n.nx + i] {
+                i0 = i0.min(i);
+                i1 = i1.max(i);
+                j0 = j0.min(j);
+                j1 = j1.max(j);
+            }
+        }
+    }
+    let (a, b) = if i0 <= i1 {
+        (0.5 * (i1 - i0 + 1) as f64 * n.hx, 0.5 * (j1 - j0 + 1) as f64 * n.hy)
+    } else {
+        (0.0, 0.0)
+    };
+    let normal_load: f64 = sol.patches.iter().map(|p| p.normal_force).sum();
+    let p0 = sol.patches.iter().map(|p| p.pmax).fold(0.0, f64::max);
+    let area: f64 = sol.patches.iter().map(|p| p.area).sum();
+    let normal_vertical: f64 =
+        sol.patches.iter().map(|p| p.normal_force * p.contact_angle.cos()).sum();
+    let total =
+        TrackForce { fx: sol.total_on_rail[0], fy: sol.total_on_rail[1], fz: sol.total_on_rail[2] };
+    cx.notes.push(format!(
+        "wheel on rail: {} patch(es); `contact` a and b are the half-lengths along x and across of the patch with the largest normal force, p0 the largest peak pressure; the patches are in `wheel_rail`",
+        sol.patches.len()
+    ));
+    Ok(Parts {
+        contact: ContactOut {
+            a,
+            b,
+            p0,
+            indentation: Some(sol.approach),
+            normal_load,
+            area: Some(area),
+            fraction: None,
+            plastic_fraction: None,
+        },
+        zones: Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: None },
+        forces: Forces {
+            normal: normal_load,
+            tangential: total.fx.hypot(total.fy),
+            moment: 0.0,
+            rolling_moment: 0.0,
+            fx: None,
+            fy: None,
+            mz: None,
+        },
+        rigid: RigidOut { tangential: None, rotation: None, per_body: None },
+        surface: lattice::Lattice::empty().into_surface(None),
+        field: Field::default(),
+        rolling: None,
+        cycle: None,
+        history: None,
+        load_curve: None,
+        wheel_rail: Some(WheelRailOut {
+            side: match r.side {
+                wr::Side::Left => "left",
+                wr::Side::Right => "right",
+            },
+            z_wheelset: sol.z_wheelset,
+            approach: sol.approach,
+            total_on_rail: total,
+            vertical_load: match r.load {
+                wr::VerticalLoad::Force(p) | wr::VerticalLoad::TotalForce(p) => Some(p),
+                wr::VerticalLoad::Approach(_) => None,
+            },
+            normal_vertical,
+            patches,
+        }),
+    })
+}
