@@ -29,6 +29,7 @@ mod bodies;
 mod build;
 mod checks;
 pub(crate) mod cost;
+mod effects;
 mod machine;
 pub mod recipe;
 mod refusal;
