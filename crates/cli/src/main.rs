@@ -48,6 +48,7 @@ mod sweep;
 
 use stickslip_report::{write_outputs_report, ReportContext, WriteOptions};
 use stickslip_run::{Plan, Progress, RunOptions, SolverOut, Zones};
+use stickslip_scene::eng::{eng, eng_scaled};
 use stickslip_scene::{Scene, SceneError};
 
 mod completions;
@@ -348,25 +349,44 @@ fn cmd_run(
     let (fu, mu) = if scene.geometry.is_2d() { ("N/m", "N m/m") } else { ("N", "N m") };
     let _ = writeln!(t, "{}", outcome.title);
     let _ = writeln!(t, "  effects on: {}", outcome.effects.on.join(", "));
+    // Engineering units (stickslip_scene::eng); a force or moment below 1e-12 of the run's
+    // normal load (times the contact size for moments) is rounding and prints as 0.
+    let (fs, ls) = (c.normal_load, c.a.max(c.b));
+    let force = |v: f64, u: &str| eng_scaled(v, fs, u);
+    let moment = |v: f64, u: &str| eng_scaled(v, fs * ls, u);
     let _ = writeln!(
         t,
-        "  contact: a = {:.6e} m, b = {:.6e} m, p0 = {:.6e} Pa, normal load = {:.6e} {fu}",
-        c.a, c.b, c.p0, c.normal_load
+        "  contact: a = {}, b = {}, p0 = {}, normal load = {}",
+        eng(c.a, "m"),
+        eng(c.b, "m"),
+        eng(c.p0, "Pa"),
+        eng(c.normal_load, fu)
     );
     if let Some(h) = c.indentation {
-        let _ = writeln!(t, "  indentation: {h:.6e} m");
+        let _ = writeln!(t, "  indentation: {}", eng(h, "m"));
+    }
+    if let Some(a) = c.area {
+        let _ = writeln!(t, "  contact area: {}", eng(a, "m²"));
     }
     let fo = &outcome.forces;
     if let (Some(fx), Some(fy), Some(mz)) = (fo.fx, fo.fy, fo.mz) {
-        let _ = writeln!(t, "  creep forces: Fx = {fx:.6e} N, Fy = {fy:.6e} N, Mz = {mz:.6e} N m");
+        let _ = writeln!(
+            t,
+            "  creep forces: Fx = {}, Fy = {}, Mz = {}",
+            force(fx, "N"),
+            force(fy, "N"),
+            moment(mz, "N m")
+        );
     } else {
         let _ = writeln!(
             t,
-            "  forces: tangential = {:.6e} {fu}, moment = {:.6e} {mu}, rolling moment = {:.6e} {mu}",
-            fo.tangential, fo.moment, fo.rolling_moment
+            "  forces: tangential = {}, moment = {}, rolling moment = {}",
+            force(fo.tangential, fu),
+            moment(fo.moment, mu),
+            moment(fo.rolling_moment, mu)
         );
     }
-    let _ = writeln!(t, "  {}", zones_line(&outcome.zones));
+    let _ = writeln!(t, "  {}", zones_line(&outcome.zones, ls));
     let _ = writeln!(t, "  solver: {}", solver_line(&outcome.solver));
     if out.is_none() {
         let _ = writeln!(t, "  (use --out DIR for result.json, CSV and plots, or --json)");
@@ -376,7 +396,7 @@ fn cmd_run(
 
 /// The stick and slip zones in one line: element counts and the stick area fraction for
 /// grid solutions, intervals otherwise.
-fn zones_line(z: &Zones) -> String {
+fn zones_line(z: &Zones, scale: f64) -> String {
     match &z.grid {
         Some(g) => format!(
             "stick: {} elements, slip: {} elements, stick area fraction {:.4} (grid of {} contact elements)",
@@ -391,7 +411,14 @@ fn zones_line(z: &Zones) -> String {
                     "none".to_string()
                 } else {
                     v.iter()
-                        .map(|i| format!("[{:.6e}, {:.6e}]", i[0], i[1]))
+                        .map(|i| {
+                            let (unit, sc) = if z.coordinate.starts_with("fraction") {
+                                ("", 1.0)
+                            } else {
+                                ("m", scale)
+                            };
+                            format!("[{}, {}]", eng_scaled(i[0], sc, unit), eng_scaled(i[1], sc, unit))
+                        })
                         .collect::<Vec<_>>()
                         .join(" ")
                 }
@@ -407,7 +434,7 @@ fn solver_line(s: &SolverOut) -> String {
     let mut t = s.method.clone();
     if s.elements > 0 {
         t.push_str(&format!(
-            ", {} elements: {} iterations{}, residual {:.2e}, {:.3} s",
+            ", {} elements: {} iterations{}, residual {:.2e}, {}",
             s.elements,
             s.iterations,
             if s.inner_iterations > 0 {
@@ -417,12 +444,12 @@ fn solver_line(s: &SolverOut) -> String {
                 String::new()
             },
             s.residual,
-            s.solve_seconds
+            eng(s.solve_seconds, "s")
         ));
     } else if s.iterations > 0 {
         t.push_str(&format!(", {} iterations, residual {:.2e}", s.iterations, s.residual));
     }
-    format!("{t} (run {:.3} s)", s.seconds)
+    format!("{t} (run {})", eng(s.seconds, "s"))
 }
 
 fn cmd_explain(scene: Option<&PathBuf>) -> Result<(), Failure> {

@@ -33,59 +33,16 @@ fn esc(s: &str) -> String {
     o
 }
 
-/// `v` with an SI prefix chosen so that the mantissa lies in [1, 1000), four significant
-/// digits: `eng(2.5e-4, "m")` is "250.0 µm", `eng(1.2e9, "Pa")` is "1.200 GPa".
-pub(crate) fn eng(v: f64, unit: &str) -> String {
-    if !v.is_finite() {
-        return format!("{v} {unit}");
-    }
-    if v == 0.0 {
-        return format!("0 {unit}");
-    }
-    let e3 = ((v.abs().log10() / 3.0).floor() as i32).min(3);
-    if e3 < -5 {
-        // Below a femto-unit no prefix reads well; zero-like values go through `eng_near`.
-        return format!("{v:.3e} {unit}");
-    }
-    let prefix = match e3 {
-        -5 => "f",
-        -4 => "p",
-        -3 => "n",
-        -2 => "µ",
-        -1 => "m",
-        0 => "",
-        1 => "k",
-        2 => "M",
-        _ => "G",
-    };
-    let m = v / 10f64.powi(3 * e3);
-    let digits = if m.abs() >= 100.0 {
-        1
-    } else if m.abs() >= 10.0 {
-        2
-    } else {
-        3
-    };
-    format!("{m:.digits$} {prefix}{unit}")
-}
-
-/// The SI prefix and divisor that `eng` gives a value of magnitude `v`.
-fn prefix_of(v: f64) -> (&'static str, f64) {
-    if !(v.is_finite() && v > 0.0) {
-        return ("", 1.0);
-    }
-    let e3 = ((v.log10() / 3.0).floor() as i32).clamp(-5, 3);
-    let prefix = ["f", "p", "n", "µ", "m", "", "k", "M", "G"][(e3 + 5) as usize];
-    (prefix, 10f64.powi(3 * e3))
-}
+pub(crate) use stickslip_scene::eng::eng;
 
 /// `v` as [`eng`] writes it, except that a value within `tol` times `scale` of zero (the
 /// result's own tolerance relative to the quantity's scale: rounding, or what the solver did
-/// not resolve) is written as 0 in the scale's unit: `eng_near(3e-17, 1e3, 1e-10, "N")` is
-/// "0 kN", not "30.00 aN" or "3.000e-17 N".
+/// not resolve) is written as 0: `eng_near(3e-17, 1e3, 1e-10, "N")` is "0 N", not
+/// "30.00 aN" or "3.000e-17 N". With `tol` = [`stickslip_scene::eng::ZERO_RELATIVE`] this is
+/// [`stickslip_scene::eng::eng_scaled`].
 pub(crate) fn eng_near(v: f64, scale: f64, tol: f64, unit: &str) -> String {
     if v.is_finite() && v.abs() <= tol * scale.abs() {
-        return format!("0 {}{unit}", prefix_of(scale.abs()).0);
+        return eng(0.0, unit);
     }
     eng(v, unit)
 }
@@ -186,7 +143,7 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
     }
     row(s, "normal load", &eng(c.normal_load, f));
     if let Some(a) = c.area {
-        row(s, "contact area", &format!("{a:.4e} m²"));
+        row(s, "contact area", &eng(a, "m²"));
     }
     if let Some(fr) = c.fraction {
         row(s, "contact fraction", &format!("{fr:.4}"));
@@ -434,7 +391,7 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
          in Pa, forces in N (N/m in 2D), speeds in m/s, times in s, angles in rad (in degrees \
          where the name ends in <code>_deg</code>); a field grid with <code>scale: HalfWidth</code> \
          is in units of the contact half-width a. Printed as Rust values.</p>\n<pre>{}</pre>\n</details>",
-        esc(&format!(
+        esc(&tidy_floats(&format!(
             "geometry: {:#?}{roughness}\nsubstrate: {:#?}\nindenter: {:#?}\nload: {:#?}\nmotion: {:#?}\noutputs: {:#?}\nsolver: {:#?}",
             resolved.geometry,
             resolved.substrate,
@@ -443,7 +400,7 @@ fn scene(s: &mut String, ctx: Option<ReportContext<'_>>) {
             resolved.motion,
             resolved.outputs,
             resolved.solver
-        ))
+        )))
     );
 }
 
@@ -468,13 +425,43 @@ fn si_quantity(text: &str) -> Option<(f64, String)> {
     Some((num * factor, u))
 }
 
-/// A number as the SI column shows it: plain between 1e-3 and 1e6, else with an exponent.
-fn si_number(v: f64) -> String {
-    if v == 0.0 || (1e-3..1e6).contains(&v.abs()) {
-        format!("{v}")
-    } else {
-        format!("{v:e}")
+/// `text` (a Rust value printed with `{:#?}`) with each floating-point number rounded to 12
+/// significant digits, so that conversion noise such as `5.0000000000000004e-8` reads `5e-8`.
+fn tidy_floats(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut o = String::with_capacity(text.len());
+    let mut k = 0;
+    while k < b.len() {
+        let starts = b[k].is_ascii_digit()
+            && (k == 0 || !(b[k - 1].is_ascii_alphanumeric() || b[k - 1] == b'_'));
+        if starts {
+            let mut e = k;
+            while e < b.len()
+                && (b[e].is_ascii_digit()
+                    || b[e] == b'.'
+                    || b[e] == b'e'
+                    || (matches!(b[e], b'-' | b'+') && e > k && b[e - 1] == b'e'))
+            {
+                e += 1;
+            }
+            let tok = &text[k..e];
+            if tok.contains(['.', 'e']) {
+                if let Ok(v) = tok.parse::<f64>() {
+                    let r: f64 = format!("{v:.11e}").parse().unwrap_or(v);
+                    o.push_str(&format!("{r:?}"));
+                    k = e;
+                    continue;
+                }
+            }
+            o.push_str(tok);
+            k = e;
+            continue;
+        }
+        let ch = text[k..].chars().next().unwrap_or(' ');
+        o.push(ch);
+        k += ch.len_utf8();
     }
+    o
 }
 
 /// Every leaf of the scene file `v` under the dotted key `key`: (key, as given, in SI).
@@ -482,14 +469,10 @@ fn given_rows(key: &str, v: &toml::Value, rows: &mut Vec<(String, String, String
     let join = |k: &str| if key.is_empty() { k.to_string() } else { format!("{key}.{k}") };
     let scalar = |v: &toml::Value| -> Option<(String, String)> {
         match v {
-            toml::Value::String(t) => Some((
-                t.clone(),
-                si_quantity(t).map_or_else(
-                    || t.clone(),
-                    |(x, u)| format!("{} {u}", si_number(x)).trim_end().to_string(),
-                ),
-            )),
-            toml::Value::Float(x) => Some((v.to_string(), si_number(*x))),
+            toml::Value::String(t) => {
+                Some((t.clone(), si_quantity(t).map_or_else(|| t.clone(), |(x, u)| eng(x, &u))))
+            }
+            toml::Value::Float(x) => Some((v.to_string(), eng(*x, ""))),
             toml::Value::Integer(_) | toml::Value::Boolean(_) | toml::Value::Datetime(_) => {
                 Some((v.to_string(), v.to_string()))
             }
@@ -607,7 +590,7 @@ fn solver(s: &mut String, out: &Outcome) {
 
 #[cfg(test)]
 mod tests {
-    use super::{eng, eng_near, esc, si_quantity};
+    use super::{eng, eng_near, esc, si_quantity, tidy_floats};
 
     #[test]
     fn quantities_in_si() {
@@ -619,8 +602,8 @@ mod tests {
 
     #[test]
     fn near_zero_prints_zero_in_the_scale_unit() {
-        assert_eq!(eng_near(3e-17, 1e3, 1e-10, "N"), "0 kN");
-        assert_eq!(eng_near(-1e-30, 2.5e-4, 1e-10, "m"), "0 µm");
+        assert_eq!(eng_near(3e-17, 1e3, 1e-10, "N"), "0 N");
+        assert_eq!(eng_near(-1e-30, 2.5e-4, 1e-10, "m"), "0 m");
         assert_eq!(eng_near(0.0, 0.0, 1e-10, "N"), "0 N");
         // above the tolerance: the value itself
         assert_eq!(eng_near(2e-6, 1e3, 1e-10, "N"), "2.000 µN");
@@ -635,6 +618,13 @@ mod tests {
         assert_eq!(eng(-15e3, "N/m"), "-15.00 kN/m");
         assert_eq!(eng(0.0, "N"), "0 N");
         assert_eq!(eng(1.0, "N"), "1.000 N");
+    }
+
+    #[test]
+    fn tidy_floats_rounds_conversion_noise_only() {
+        assert_eq!(tidy_floats("a: 5.0000000000000004e-8,"), "a: 5e-8,");
+        assert_eq!(tidy_floats("x: 0.30000000000000004 y: 7 z2: 1.5"), "x: 0.3 y: 7 z2: 1.5");
+        assert_eq!(tidy_floats("e: -2.1e11, µ: 0.1"), "e: -210000000000.0, µ: 0.1");
     }
 
     #[test]

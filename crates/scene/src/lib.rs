@@ -52,6 +52,7 @@
 //! assert_eq!(e.position, Some((3, 10)));
 //! ```
 
+pub mod eng;
 mod error;
 pub mod json_schema;
 pub mod materials;
