@@ -99,16 +99,9 @@ surface = true
     }
 
 
-def run_tamaas(h, size, e, nu, mean_pressure, tol):
-    import tamaas as tm
-
-    n = h.shape[0]
-    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [size, size], [n, n])
-    model.E = e
-    model.nu = nu
-    solver = tm.PolonskyKeerRey(model, np.ascontiguousarray(h), tol)
-    solver.max_iter = 10000
-    # tamaas prints its iteration log on the C stdout: capture it to read the count
+def solve_logged(solver, mean_pressure):
+    """Run a tamaas solver at `mean_pressure` with its iteration log (printed on the C
+    stdout and stderr) captured: returns (error, solve seconds, iterations or None, log text)."""
     log = tempfile.TemporaryFile(mode="w+")
     sys.stdout.flush()
     sys.stderr.flush()
@@ -127,8 +120,22 @@ def run_tamaas(h, size, e, nu, mean_pressure, tol):
         os.close(saved[0])
         os.close(saved[1])
     log.seek(0)
-    rows = [r.split() for r in log.read().splitlines() if r.strip() and r.split()[0].isdigit()]
-    its = int(rows[-1][0]) if rows else None
+    text = log.read()
+    rows = [r.split() for r in text.splitlines() if r.strip() and r.split()[0].isdigit()]
+    return error, secs, (int(rows[-1][0]) if rows else None), text
+
+
+def run_tamaas(h, size, e, nu, mean_pressure, tol):
+    import tamaas as tm
+
+    n = h.shape[0]
+    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [size, size], [n, n])
+    model.E = e
+    model.nu = nu
+    solver = tm.PolonskyKeerRey(model, np.ascontiguousarray(h), tol)
+    solver.max_iter = 10000
+    # tamaas prints its iteration log on the C stdout: captured to read the count
+    error, secs, its, _ = solve_logged(solver, mean_pressure)
     p = np.array(model.traction, dtype=float).reshape(n, n)
     # gap: u - h up to the constant that closes it where there is pressure, sign so that it
     # is non-negative outside the contact

@@ -23,12 +23,11 @@ import argparse
 import os
 import sys
 import tempfile
-import time
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from compare_tamaas import rough_surface, run_ours  # noqa: E402
+from compare_tamaas import rough_surface, run_ours, solve_logged  # noqa: E402
 
 
 def run_kato(h, size, e, nu, mean_pressure, hardness, tol, max_iter):
@@ -40,27 +39,7 @@ def run_kato(h, size, e, nu, mean_pressure, hardness, tol, max_iter):
     model.nu = nu
     solver = tm.KatoSaturated(model, np.ascontiguousarray(h), tol, hardness)
     solver.max_iter = max_iter
-    log = tempfile.TemporaryFile(mode="w+")
-    sys.stdout.flush()
-    sys.stderr.flush()
-    saved = (os.dup(1), os.dup(2))
-    os.dup2(log.fileno(), 1)
-    os.dup2(log.fileno(), 2)
-    try:
-        t0 = time.perf_counter()
-        error = solver.solve(mean_pressure)
-        secs = time.perf_counter() - t0
-    finally:
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os.dup2(saved[0], 1)
-        os.dup2(saved[1], 2)
-        os.close(saved[0])
-        os.close(saved[1])
-    log.seek(0)
-    text = log.read()
-    rows = [r.split() for r in text.splitlines() if r.strip() and r.split()[0].isdigit()]
-    its = int(rows[-1][0]) if rows else None
+    error, secs, its, text = solve_logged(solver, mean_pressure)
     p = np.array(model.traction, dtype=float).reshape(n, n)
     return {
         "p": p,
