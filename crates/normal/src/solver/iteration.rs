@@ -182,17 +182,7 @@ impl NormalProblem<'_> {
                             .zip(&gp[j * nx..(j + 1) * nx]);
                         let mut acc = [0.0; 4];
                         for (z, ((p, g), gp)) in z.iter_mut().zip(cells) {
-                            if *p > 0.0 && *p < cap {
-                                let gp = f64::from(*gp);
-                                acc = [
-                                    acc[0] + *z,
-                                    acc[1] + (g - delta) * *z,
-                                    acc[2] + gp * *z,
-                                    acc[3] + gp,
-                                ];
-                            } else {
-                                *z = 0.0;
-                            }
+                            free_cell(z, *p, *g, *gp, cap, delta, &mut acc);
                         }
                         acc
                     },
@@ -207,18 +197,9 @@ impl NormalProblem<'_> {
                             for (z, (p, (g, gp))) in
                                 z.iter_mut().zip(p.iter().zip(g.iter().zip(gp)))
                             {
-                                if *p > 0.0 && *p < cap {
-                                    let gp = f64::from(*gp);
-                                    *z = g - delta;
-                                    acc = [
-                                        acc[0] + *z,
-                                        acc[1] + (g - delta) * *z,
-                                        acc[2] + gp * *z,
-                                        acc[3] + gp,
-                                    ];
-                                } else {
-                                    *z = 0.0;
-                                }
+                                // Unpreconditioned: the direction is the residual itself.
+                                *z = g - delta;
+                                free_cell(z, *p, *g, *gp, cap, delta, &mut acc);
                             }
                             acc
                         }),
@@ -567,5 +548,18 @@ impl GapSums {
             .max(0.0);
         let rf = sum.map_or(0.0, |s| (self.pressure - s).abs() / s);
         (e / scale, rf)
+    }
+}
+
+/// One cell of the search-direction pass: on the free set ($0 < p < H$) add the direction
+/// `z`, its product with the residual $g - \delta$, and the preconditioner's weight to the
+/// block sums `acc`; elsewhere zero the direction.
+#[inline]
+fn free_cell(z: &mut f64, p: f64, g: f64, gp: f32, cap: f64, delta: f64, acc: &mut [f64; 4]) {
+    if p > 0.0 && p < cap {
+        let gp = f64::from(gp);
+        *acc = [acc[0] + *z, acc[1] + (g - delta) * *z, acc[2] + gp * *z, acc[3] + gp];
+    } else {
+        *z = 0.0;
     }
 }
