@@ -150,7 +150,7 @@ fn loads_beyond_capacity_are_refused_before_solving() {
         for (what, load, spin) in beyond {
             let (tx, ty) = load.force_components();
             let mo = load.moment_value().unwrap_or(0.0);
-            // The planner's checks (crates/run/src/plan/checks.rs): the full-slip moment
+            // The planner's checks (crates/plan/src/checks.rs): the full-slip moment
             // for a moment, the limit surface for a force with or without a moment.
             let refused =
                 if spin { mo.abs() > cap } else { g.load_capacity_factor(F, (tx, ty), mo) < 1.0 };

@@ -5,7 +5,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use stickslip_run::{Plan, RunOptions};
+use stickslip_run::{Execute, Plan, RunOptions};
 use stickslip_scene::Scene;
 
 /// Words of the implementation that must never reach a user.

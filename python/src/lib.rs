@@ -13,7 +13,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use stickslip_report::{write_outputs_with, WriteOptions};
-use stickslip_run::{MachineLimits, Plan, RunOptions};
+use stickslip_run::{Execute, MachineLimits, Plan, RunOptions};
 use stickslip_scene::{Scene, SceneError};
 use stickslip_sweep::{Cell, Kind, Shard, Sweep, Vary};
 

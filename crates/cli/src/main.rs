@@ -47,7 +47,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 mod sweep;
 
 use stickslip_report::{write_outputs_report, ReportContext, WriteOptions};
-use stickslip_run::{Plan, Progress, RunOptions, SolverOut, Zones};
+use stickslip_run::{Execute, Plan, Progress, RunOptions, SolverOut, Zones};
 use stickslip_scene::eng::{eng, eng_scaled};
 use stickslip_scene::{Scene, SceneError};
 

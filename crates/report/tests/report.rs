@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use stickslip_report::{write_outputs, write_outputs_report, ReportContext, WriteOptions};
-use stickslip_run::{Plan, RunOptions};
+use stickslip_run::{Execute, Plan, RunOptions};
 use stickslip_scene::Scene;
 
 fn scratch(name: &str) -> PathBuf {

@@ -1,23 +1,23 @@
-//! The run of a stickslip scene: the planner decides how each effect is computed, the stages
-//! compute it with the physics crates, and the audit checks the result before anyone sees it.
+//! The run of a stickslip scene: the planner (`stickslip-plan`, re-exported here as
+//! [`plan`]) decides how each effect is computed, the stages compute it with the physics
+//! crates, and the audit checks the result before anyone sees it.
 //!
 //! The path of a run is **scene → plan → execute → audit**; the scene itself (its format,
 //! reading and validation) is `stickslip-scene`, the files written from a result are
 //! `stickslip-report`.
 //!
-//! - [`plan`]: the planner ([`Plan::new`]): the refusals of what no solver handles, a typed
-//!   [`Recipe`] (the method and resolved inputs of every stage), the effects on/off with
-//!   reasons, the estimated [`Cost`] and the machine check; `explain` prints it
-//!   ([`Plan::explain`]);
-//! - [`exec`]: [`Plan::execute`] runs the recipe stage by stage (normal contact → friction
-//!   → twist → rolling → load cycle → subsurface field), deciding nothing again
-//!   ([`Evaluations`] counts what ran), audits the result and returns an [`Outcome`] (the
-//!   content of result.json); [`run()`] is plan + execute;
-//! - [`read_scene`], [`read_scene_file`] and [`check`]: a scene read and refused as a run
-//!   refuses it (the format's checks, then the planner's);
-//! - [`reference`](mod@reference): the closed forms a plot draws beside a result;
-//! - [`scenes_page`]: the overview of a directory of scenes (`docs/scenes.md`): effects and
-//!   techniques per scene, from the planner alone.
+//! - [`plan`] (the crate `stickslip-plan`, re-exported): the planner ([`Plan::new`]): the
+//!   refusals of what no solver handles, a typed [`Recipe`] (the method and resolved inputs
+//!   of every stage), the effects on/off with reasons, the estimated [`Cost`] and the
+//!   machine check; `explain` prints it ([`Plan::explain`]); [`read_scene`],
+//!   [`read_scene_file`] and [`check`] read a scene and refuse it as a run refuses it (the
+//!   format's checks, then the planner's); [`scenes_page`] is the overview of a directory
+//!   of scenes (`docs/scenes.md`), from the planner alone;
+//! - [`exec`]: [`Execute::execute`] (`plan.execute(&opts)`) runs the recipe stage by stage
+//!   (normal contact → friction → twist → rolling → load cycle → subsurface field), deciding
+//!   nothing again ([`Evaluations`] counts what ran), audits the result and returns an
+//!   [`Outcome`] (the content of result.json); [`run()`] is plan + execute;
+//! - [`reference`](mod@reference): the closed forms a plot draws beside a result.
 //!
 //! ```
 //! use stickslip_run::{run, RunOptions};
@@ -54,12 +54,10 @@
 #![allow(clippy::result_large_err)]
 
 pub mod exec;
-mod overview;
-mod patches;
-pub mod plan;
 pub mod reference;
 
-use std::path::{Path, PathBuf};
+/// The planner, `stickslip-plan`, under the name the stages use.
+pub use stickslip_plan as plan;
 
 pub use exec::outcome::{
     Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
@@ -67,14 +65,15 @@ pub use exec::outcome::{
     Progress, RigidOut, RollingOut, RunOptions, SolverOut, SurfaceOut, VolumeField, Zones,
     INLINE_FIELD_POINTS,
 };
-pub use overview::scenes_page;
-pub use plan::recipe::Recipe;
-pub use plan::{
-    Cost, Effect, EffectPlan, MachineLimits, Plan, Technique, DEFAULT_TIME_LIMIT_SECONDS,
+pub use exec::{execute, Execute};
+pub use stickslip_plan::recipe::Recipe;
+pub use stickslip_plan::{
+    check, read_scene, read_scene_file, scenes_page, Cost, Effect, EffectPlan, MachineLimits, Plan,
+    Technique, DEFAULT_TIME_LIMIT_SECONDS,
 };
 use stickslip_scene::{Scene, SceneError};
 
-/// Plan `scene` and execute the plan: [`Plan::new`] then [`Plan::execute`].
+/// Plan `scene` and execute the plan: [`Plan::new`] then [`Execute::execute`].
 ///
 /// # Errors
 /// A [`SceneError`] for a scene the planner refuses, or (kind
@@ -83,37 +82,4 @@ use stickslip_scene::{Scene, SceneError};
 /// fails its audit.
 pub fn run(scene: &Scene, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
     Plan::new(scene)?.execute(opts)
-}
-
-/// Every refusal a run gives before solving: the scene's own validation
-/// ([`Scene::validate`]), then the planner's ([`Plan::new`]), located in the file when the
-/// scene came from one.
-///
-/// # Errors
-/// The first refusal.
-pub fn check(scene: &Scene) -> Result<(), SceneError> {
-    scene.validate()?;
-    Plan::new(scene).map(|_| ())
-}
-
-/// Read a scene from TOML text as a run does: [`Scene::from_toml_str`], then the planner's
-/// refusals ([`check`]). `file` is used in error messages only.
-///
-/// # Errors
-/// A [`SceneError`] with the file, line, column, key and a hint.
-pub fn read_scene(text: &str, file: Option<PathBuf>) -> Result<Scene, SceneError> {
-    let scene = Scene::from_toml_str(text, file)?;
-    Plan::new(&scene)?;
-    Ok(scene)
-}
-
-/// Read a scene file as a run does: [`Scene::from_file`], then the planner's refusals
-/// ([`check`]).
-///
-/// # Errors
-/// A [`SceneError`] with the file, line, column, key and a hint.
-pub fn read_scene_file(path: &Path) -> Result<Scene, SceneError> {
-    let scene = Scene::from_file(path)?;
-    Plan::new(&scene)?;
-    Ok(scene)
 }

@@ -214,7 +214,7 @@ fn history_loop(
 #[cfg(test)]
 mod tests {
     use super::{of, References};
-    use crate::{Outcome, Plan, RunOptions};
+    use crate::{Execute, Outcome, Plan, RunOptions};
     use stickslip_scene::Scene;
 
     fn run(name: &str) -> (References, Outcome) {

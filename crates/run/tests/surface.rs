@@ -4,7 +4,7 @@
 
 use std::f64::consts::PI;
 
-use stickslip_run::{run, Outcome, RunOptions};
+use stickslip_run::{run, Execute, Outcome, RunOptions};
 use stickslip_scene::{ErrorKind, Scene};
 
 const BASE: &str = "[geometry]\nkind = \"surface\"\nBOUNDARY\nsize = [\"0.8 mm\", \"0.8 mm\"]\ncells = [128, 128]\n[geometry.profile]\nPROFILE\nROUGH\n[substrate]\nmodel = \"homogeneous\"\ne = \"210 GPa\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nLOAD\n";

@@ -43,7 +43,7 @@ pub use journal::{journal_path, write_atomically, Journaled};
 pub use table::{format_f64, Cell, Kind, Table, TableError};
 pub use vary::{Vary, VaryError, VaryValue};
 
-use stickslip_run::{read_scene, MachineLimits, Outcome, Plan, RunOptions};
+use stickslip_run::{read_scene, Execute, MachineLimits, Outcome, Plan, RunOptions};
 use stickslip_scene::{ErrorKind, SceneError};
 
 /// The columns before the varied keys: the point index, the sweep's identity (a hash of the

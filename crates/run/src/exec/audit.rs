@@ -19,7 +19,7 @@
 
 use super::outcome::{Audit, Check, Outcome, SurfaceOut};
 use super::Ctx;
-use crate::patches::LATTICE_AREA_TOLERANCE;
+use crate::plan::patches::LATTICE_AREA_TOLERANCE;
 use crate::plan::recipe::{
     ContactRecipe, GridStep, Recipe, RollingMethod, RollingModel, RollingStep, Tangential,
 };

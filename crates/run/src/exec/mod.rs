@@ -28,7 +28,7 @@ mod lattice;
 mod normal;
 pub(crate) mod outcome;
 
-pub use crate::patches::LATTICE_AREA_TOLERANCE;
+pub use crate::plan::patches::LATTICE_AREA_TOLERANCE;
 pub use audit::SAMPLING_TOLERANCE;
 mod roll3d;
 mod rolling;
@@ -151,12 +151,17 @@ fn locate(plan: &Plan, e: SceneError) -> SceneError {
     e.in_file(plan.file.clone())
 }
 
-impl Plan {
+/// `plan.execute(&opts)`: a [`Plan`] (made by `stickslip-plan`) run by this crate's stages.
+pub trait Execute {
     /// Run this plan, stage by stage ([`execute`]).
     ///
     /// # Errors
     /// See [`execute`].
-    pub fn execute(&self, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
+    fn execute(&self, opts: &RunOptions<'_>) -> Result<Outcome, SceneError>;
+}
+
+impl Execute for Plan {
+    fn execute(&self, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
         execute(self, opts)
     }
 }

@@ -191,8 +191,12 @@ pub(crate) fn contact(r: &ContactRecipe, cx: &mut Ctx<'_>) -> Result<ContactSolu
             let pmax = ps.iter().map(|p| p.pressure).fold(0.0, f64::max);
             let p: f64 = ps.iter().map(Patch::force).sum();
             let h = (hi[0] - lo[0]).max(hi[1] - lo[1]) / n as f64;
-            let grid =
-                ContactGrid::from_patches(h, h, (lo[0], lo[1]), &crate::patches::grid_patches(ps));
+            let grid = ContactGrid::from_patches(
+                h,
+                h,
+                (lo[0], lo[1]),
+                &crate::plan::patches::grid_patches(ps),
+            );
             let nx = ((hi[0] - lo[0]) / h).round() as usize;
             let ny = ((hi[1] - lo[1]) / h).round() as usize;
             (

@@ -2,7 +2,7 @@
 //! serves each (docs/SCENES.md, "Effects").
 //!
 //! The planner reads a validated [`Scene`] and decides, without computing anything, a
-//! [`Plan`]: a typed [`Recipe`] that [`Plan::execute`] runs stage by stage and nothing
+//! [`Plan`]: a typed [`Recipe`] that `stickslip-run` executes stage by stage and nothing
 //! else, and the explanation `explain` prints:
 //!
 //! - for each of the eight effects of docs/SCENES.md, whether it is on, with the reason;
@@ -16,14 +16,22 @@
 //!
 //! It also refuses, before any computation, the combinations no solver in the workspace
 //! handles (a graded sphere, a twisting moment together with a tangential force by the LP,
-//! ...), each with the key to change and a hint. Execution ([`crate::exec`]) follows the
+//! ...), each with the key to change and a hint. Execution (`stickslip-run`'s `exec`) follows the
 //! recipe and decides nothing again, so an effect that is off is never evaluated.
 //!
 //! Files: `checks.rs` (refusals, tolerances, capacity checks), `build.rs` (the recipe and
 //! the effects with their reasons), `cost.rs` (the estimate and the memory refusals),
-//! `recipe.rs` (the types).
+//! `recipe.rs` (the types), `patches.rs` (pressure patches on a lattice), `overview.rs` (the
+//! scenes overview page, from the planner alone).
+//!
+//! [`read_scene`], [`read_scene_file`] and [`check`] read a scene and refuse it as a run
+//! refuses it: the format's checks, then the planner's.
+
+// SceneError carries file, position, key and hint for the user; one per call.
+#![allow(clippy::result_large_err)]
 
 use std::fmt;
+use std::path::{Path, PathBuf};
 
 mod bodies;
 mod build;
@@ -31,11 +39,14 @@ mod checks;
 pub(crate) mod cost;
 mod effects;
 mod machine;
+mod overview;
+pub mod patches;
 pub mod recipe;
 mod refusal;
 
 pub use cost::{human_bytes, human_seconds, MEMORY_LIMIT_BYTES};
 pub use machine::{MachineLimits, DEFAULT_TIME_LIMIT_SECONDS};
+pub use overview::scenes_page;
 pub use recipe::Recipe;
 
 pub(crate) use stickslip_scene::Issue;
@@ -43,7 +54,8 @@ use stickslip_scene::{Scene, SceneError};
 
 /// One of the physical effects of docs/SCENES.md.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[non_exhaustive]
+// Exhaustive on purpose: the executor (`stickslip-run`) maps every effect to its counters,
+// so a new effect must not compile until it does.
 pub enum Effect {
     /// Normal contact: always on.
     NormalContact,
@@ -490,6 +502,39 @@ impl Plan {
         ));
         s
     }
+}
+
+/// Every refusal a run gives before solving: the scene's own validation
+/// ([`Scene::validate`]), then the planner's ([`Plan::new`]), located in the file when the
+/// scene came from one.
+///
+/// # Errors
+/// The first refusal.
+pub fn check(scene: &Scene) -> Result<(), SceneError> {
+    scene.validate()?;
+    Plan::new(scene).map(|_| ())
+}
+
+/// Read a scene from TOML text as a run does: [`Scene::from_toml_str`], then the planner's
+/// refusals ([`check`]). `file` is used in error messages only.
+///
+/// # Errors
+/// A [`SceneError`] with the file, line, column, key and a hint.
+pub fn read_scene(text: &str, file: Option<PathBuf>) -> Result<Scene, SceneError> {
+    let scene = Scene::from_toml_str(text, file)?;
+    Plan::new(&scene)?;
+    Ok(scene)
+}
+
+/// Read a scene file as a run does: [`Scene::from_file`], then the planner's refusals
+/// ([`check`]).
+///
+/// # Errors
+/// A [`SceneError`] with the file, line, column, key and a hint.
+pub fn read_scene_file(path: &Path) -> Result<Scene, SceneError> {
+    let scene = Scene::from_file(path)?;
+    Plan::new(&scene)?;
+    Ok(scene)
 }
 
 #[cfg(test)]

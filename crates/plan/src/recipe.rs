@@ -5,7 +5,7 @@
 //! chosen for each step) of the stages that run. The types admit only the combinations the
 //! planner produces: a line contact cannot carry a 3D grid solver, rolling has no separate
 //! normal step (Carter and Goryacheva solve both together), a flat punch has no
-//! partial-slip step. The executor ([`crate::exec`]) therefore matches on these types and
+//! partial-slip step. The executor (`stickslip-run`'s `exec`) therefore matches on these types and
 //! never on the scene, and has no arm for "the plan and the scene disagree".
 
 use stickslip_graded::{Accuracy, GradedMaterial};
@@ -17,7 +17,8 @@ use stickslip_scene::{FieldGrid, Patch};
 
 /// What execution does.
 #[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
+// Exhaustive on purpose: the executor (`stickslip-run`) matches every variant, so a new
+// kind of problem does not compile until it has its stages.
 pub enum Recipe {
     /// A static plane-strain contact (cylinder or punch), per unit length.
     Line(LineRecipe),

@@ -1,6 +1,6 @@
 //! Pressure patches on a lattice: the scene's patches as the traction crate's grid patches,
 //! and how closely a lattice must reproduce their force. The planner refuses a lattice that
-//! misses it (`plan/checks.rs`) before the audit would (`exec/audit.rs`).
+//! misses it (`checks.rs`) before `stickslip-run`'s audit would.
 
 use stickslip_lattice::{GridPatch, PatchPressure, Shape};
 use stickslip_scene::{Patch, PatchShape};
@@ -10,7 +10,7 @@ use stickslip_scene::{Patch, PatchShape};
 pub const LATTICE_AREA_TOLERANCE: f64 = 0.02;
 
 /// The scene's patches as the traction crate's grid patches.
-pub(crate) fn grid_patches(ps: &[Patch]) -> Vec<GridPatch> {
+pub fn grid_patches(ps: &[Patch]) -> Vec<GridPatch> {
     ps.iter()
         .map(|p| GridPatch {
             shape: match p.shape {

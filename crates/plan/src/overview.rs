@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use crate::plan::{Effect, Plan, Technique};
+use crate::{Effect, Plan, Technique};
 use stickslip_scene::{ErrorKind, Scene, SceneError};
 
 /// The Markdown page for the `*.toml` scenes of `dir`, sorted by file name. `link_prefix` is

@@ -130,7 +130,7 @@ fn wheel_rail_recipe(
     scene: &Scene,
     bodies: &Bodies,
     w: &stickslip_scene::WheelRail,
-) -> Result<crate::plan::recipe::WheelRailRecipe, Issue> {
+) -> Result<crate::recipe::WheelRailRecipe, Issue> {
     use stickslip_wheelrail as wr;
     let wr_err = |key: &str, e: wr::Error, hint: &str| {
         Issue::new(ErrorKind::OutOfRange, key, e.to_string()).hint(hint.to_string())
@@ -219,7 +219,7 @@ fn wheel_rail_recipe(
             "cell = [along x, across], two lengths > 0; friction >= 0; at most one rigid body",
         )
     })?;
-    Ok(crate::plan::recipe::WheelRailRecipe {
+    Ok(crate::recipe::WheelRailRecipe {
         side,
         track,
         wheelset,
