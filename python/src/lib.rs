@@ -12,7 +12,7 @@ use std::path::PathBuf;
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
-use stickslip_report::{write_outputs_with, WriteOptions};
+use stickslip_report::{write_outputs_report, ReportContext, WriteOptions};
 use stickslip_run::{Execute, MachineLimits, Plan, RunOptions};
 use stickslip_scene::{Scene, SceneError};
 use stickslip_sweep::{Cell, Kind, Shard, Sweep, Vary};
@@ -68,17 +68,18 @@ fn json_to_toml(json: &str) -> PyResult<String> {
 }
 
 /// Plan and execute the scene `text` (read from `file`, for messages); write the outputs
-/// into `out` when given. Returns result.json's text and the arrays of a 3D field (always,
+/// into `out` when given, as `stickslip run --out` does (result.json, CSV, NPY, the plots
+/// unless `plots` or the scene's `outputs.plots` turns them off, and report.html). Returns result.json's text and the arrays of a 3D field (always,
 /// also when result.json leaves them out because the box is large), flat.
 #[pyfunction]
-#[pyo3(signature = (text, file=None, out=None, plots=false, force=false, time_limit=600.0))]
+#[pyo3(signature = (text, file=None, out=None, plots=None, force=false, time_limit=600.0))]
 #[allow(clippy::type_complexity)]
 fn run(
     py: Python<'_>,
     text: &str,
     file: Option<PathBuf>,
     out: Option<PathBuf>,
-    plots: bool,
+    plots: Option<bool>,
     force: bool,
     time_limit: f64,
 ) -> PyResult<(String, Option<BTreeMap<String, Vec<f64>>>)> {
@@ -88,7 +89,13 @@ fn run(
         plan.check_machine(&MachineLimits::detect(time_limit))?;
         let outcome = plan.execute(&RunOptions::default())?;
         if let Some(dir) = &out {
-            write_outputs_with(&outcome, dir, WriteOptions { plots, force })?;
+            let plots = plots.unwrap_or(scene.outputs.plots);
+            write_outputs_report(
+                &outcome,
+                dir,
+                WriteOptions { plots, force },
+                ReportContext { scene: &scene, plan: &plan },
+            )?;
         }
         let arrays = outcome.field.volume().map(|v| {
             let a = &v.arrays;

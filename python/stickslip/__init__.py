@@ -167,12 +167,14 @@ class Result:
         return "Result(%s)" % ", ".join(self._data)
 
 
-def run(scene, out=None, plots=False, force=False, time_limit=600.0):
+def run(scene, out=None, plots=None, force=False, time_limit=600.0):
     """Plan, execute and audit ``scene``; a :class:`Result`.
 
-    ``out``: also write result.json, CSV and .npy files (and SVG plots with ``plots=True``)
-    into this directory, replaced whole as ``stickslip run --out`` does (an existing
+    ``out``: also write result.json, CSV and .npy files, the SVG plots and report.html into
+    this directory, replaced whole, exactly as ``stickslip run --out`` does (an existing
     directory that is not an earlier result is refused unless ``force=True``).
+    ``plots``: ``None`` (the default) follows the scene's ``outputs.plots`` (on unless the
+    scene turns it off), ``True`` or ``False`` overrides it.
     ``time_limit``: refuse a run estimated to take longer (seconds).
 
     Raises :class:`SceneError` (refused, or a solver failed) or :class:`AuditError`.

@@ -76,12 +76,14 @@ class Result:
 def run(
     scene: Scene,
     out: Union[str, "PathLike[str]", None] = ...,
-    plots: bool = ...,
+    plots: Optional[bool] = ...,
     force: bool = ...,
     time_limit: float = ...,
 ) -> Result:
     """Plan, execute and audit ``scene``; a :class:`Result`. ``out``: also write the result
-    files there. Raises :class:`SceneError` or :class:`AuditError`."""
+    files, plots and report.html there as ``stickslip run --out`` does; ``plots=None``
+    follows the scene's ``outputs.plots``. Raises :class:`SceneError` or
+    :class:`AuditError`."""
 
 def explain(scene: Scene) -> str:
     """The plan of ``scene`` as ``stickslip explain`` prints it; nothing is computed."""

@@ -241,3 +241,17 @@ def test_a_worker_killed_mid_sweep_costs_no_point_and_repeats_none():
     print("sweep %.2f s, worker killed at %.2f s" % (end - t0, killed["at"] - t0))
     assert list(df["point"]) == list(range(16))
     pd.testing.assert_frame_equal(df, serial, check_exact=True)
+
+
+def test_out_writes_what_the_cli_writes_plots_by_default(tmp_path):
+    # Issue 33 item 1: the plots are on unless the scene or the caller turns them off, and
+    # report.html is written beside result.json, as `stickslip run --out` does.
+    out = tmp_path / "on"
+    stickslip.run(SCENES / "hertz_cylinder_cattaneo.toml", out=out)
+    names = {p.name for p in out.iterdir()}
+    assert "report.html" in names and "result.json" in names
+    assert any(n.endswith(".svg") for n in names), names
+    off = tmp_path / "off"
+    stickslip.run(SCENES / "hertz_cylinder_cattaneo.toml", out=off, plots=False)
+    names = {p.name for p in off.iterdir()}
+    assert "report.html" in names and not any(n.endswith(".svg") for n in names), names

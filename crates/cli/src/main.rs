@@ -2,7 +2,7 @@
 //!
 //! - `stickslip run [SCENE] [--out DIR [--force]] [--json]`: run a scene (the built-in
 //!   default scene, seed 000's Table 1 roller, when none is given): plan it (`Plan::new`,
-//!   the plan `explain` prints) and execute that plan (`Plan::execute`); write result.json,
+//!   the plan `explain` prints) and execute that plan (`Execute::execute`); write result.json,
 //!   CSV, SVG plots and report.html into DIR, replacing it whole (`write_outputs_report`: an existing DIR
 //!   that is not a previous result is refused unless `--force`), or print the JSON with
 //!   `--json`.

@@ -120,9 +120,8 @@ pub fn cmd_sweep(a: &SweepArgs) -> Result<(), Failure> {
     } else {
         format!("sweep-{}of{}", shard.index, shard.count)
     };
-    std::fs::create_dir_all(&a.out).map_err(|e| {
-        Failure::Other(format!("cannot create the directory {}: {e}", a.out.display()), 1)
-    })?;
+    // The journal's place is known before anything is created: a refused --resume leaves
+    // no directory behind.
     let journal = journal_path(&a.out, &stem);
     if a.resume && !journal.exists() {
         return Err(Failure::Other(
@@ -133,6 +132,9 @@ pub fn cmd_sweep(a: &SweepArgs) -> Result<(), Failure> {
             2,
         ));
     }
+    std::fs::create_dir_all(&a.out).map_err(|e| {
+        Failure::Other(format!("cannot create the directory {}: {e}", a.out.display()), 1)
+    })?;
     let run = sweep
         .run_journaled(shard, a.time_limit, &journal, a.resume, |_| {
             if let Some(b) = &bar {

@@ -180,6 +180,19 @@ fn a_killed_sweep_resumes_without_solving_a_point_twice_or_losing_one() {
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(2));
+    // ... and a refused --resume into a directory that does not exist leaves none behind.
+    let fresh = d.join("never-made");
+    let o = bin()
+        .arg("sweep")
+        .arg(&scene)
+        .args(vary)
+        .arg("--out")
+        .arg(&fresh)
+        .arg("--resume")
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!fresh.exists(), "a refused --resume created {}", fresh.display());
     std::fs::write(&journal, "point,sweep\n").unwrap();
     let o = bin()
         .arg("sweep")

@@ -9,6 +9,7 @@ use super::bodies;
 use super::recipe::{Bodies, ContactNormal};
 use super::refusal::{invalid, issue, unsupported};
 use super::Issue;
+use stickslip_scene::eng::eng;
 use stickslip_scene::{ErrorKind, FieldGrid, FieldScale};
 use stickslip_scene::{
     Geometry, Indenter, Method, Motion, NormalLoad, Scene, Substrate, SurfaceBoundary,
@@ -133,10 +134,11 @@ pub(crate) fn spin(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
             ErrorKind::Impossible,
             "load.moment",
             format!(
-                "|M| = {} exceeds the full-slip moment of the contact about its centre of pressure, {cap:.6e} N m: the contact spins",
-                l.moment.abs()
+                "|M| = {} exceeds the full-slip moment of the contact about its centre of pressure, {}: the contact spins",
+                eng(l.moment.abs(), "N m"),
+                eng(cap, "N m")
             ),
-            format!("reduce the moment below {cap:.4e} N m (less when a tangential force acts too)"),
+            format!("reduce the moment below {} (less when a tangential force acts too)", eng(cap, "N m")),
         ));
     }
     if l.tangential != 0.0 && !l.sliding {
@@ -150,8 +152,8 @@ pub(crate) fn spin(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
                 ErrorKind::Impossible,
                 "load.moment",
                 format!(
-                    "the tangential force {:.6e} N and the moment {:.6e} N m together exceed what friction carries on this contact: at most {lambda:.4} times this combination can be carried before the contact slides (gross slip, found on the lattice of solver.grid = {n})",
-                    l.tangential, l.moment
+                    "the tangential force {} and the moment {} together exceed what friction carries on this contact: at most {lambda:.4} times this combination can be carried before the contact slides (gross slip, found on the lattice of solver.grid = {n})",
+                    eng(l.tangential, "N"), eng(l.moment, "N m")
                 ),
                 format!("scale load.tangential and load.moment by less than {lambda:.4}, or reduce one of them"),
             ));
@@ -193,9 +195,10 @@ pub(crate) fn capacity(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
                 ErrorKind::Impossible,
                 "load.tangential",
                 format!(
-                    "|T| = {} exceeds f P = {} (P = {p} implied by the half-width): the contact slides, partial slip is impossible",
-                    l.tangential.abs(),
-                    l.friction * p
+                    "|T| = {} exceeds f P = {} (P = {} implied by the half-width): the contact slides, partial slip is impossible",
+                    eng(l.tangential.abs(), "N/m"),
+                    eng(l.friction * p, "N/m"),
+                    eng(p, "N/m")
                 ),
                 "reduce T below f P, or set sliding = true",
             ));
@@ -211,8 +214,9 @@ pub(crate) fn capacity(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
                 ErrorKind::Impossible,
                 "load.moment",
                 format!(
-                    "|M| = {} exceeds the gross-slip moment 3 pi f P a / 16 = {mmax}: the contact spins",
-                    l.moment.abs()
+                    "|M| = {} exceeds the gross-slip moment 3 pi f P a / 16 = {}: the contact spins",
+                    eng(l.moment.abs(), "N m"),
+                    eng(mmax, "N m")
                 ),
                 "reduce the moment below 3 pi f P a / 16 (Lubkin)",
             ));
@@ -529,9 +533,9 @@ pub(crate) fn field_box(
                 ErrorKind::OutOfRange,
                 key,
                 format!(
-                    "the box reaches {:.3e} m from the contact centre; the contact's largest semi-axis is {:.3e} m",
-                    (lo * unit).abs().max((hi * unit).abs()),
-                    ax.max(ay)
+                    "the box reaches {} from the contact centre; the contact's largest semi-axis is {}",
+                    eng((lo * unit).abs().max((hi * unit).abs()), "m"),
+                    eng(ax.max(ay), "m")
                 ),
                 format!("keep the box within {MAX_FIELD_REACH} semi-axes of the contact (scale = \"a\" measures in the semi-axis a along x)"),
             ));
@@ -569,31 +573,36 @@ pub(crate) fn magnitudes(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
         Flat { ratio: f64, what: String },
     }
     let m = match (&scene.geometry, scene.load.normal) {
-        (Geometry::Cylinder { radius }, NormalLoad::HalfWidth(a)) => {
-            Some(Measure::Curved { ratio: a / radius, what: format!("a/R with R = {radius:e} m") })
-        }
+        (Geometry::Cylinder { radius }, NormalLoad::HalfWidth(a)) => Some(Measure::Curved {
+            ratio: a / radius,
+            what: format!("a/R with R = {}", eng(radius.abs(), "m")),
+        }),
         (Geometry::Cylinder { radius }, NormalLoad::Force(p)) => {
             let a = match bodies.graded {
                 Some(g) => stickslip_graded::half_width_from_load(&g, *radius, p)
                     .map_err(|e| invalid("load.normal", e))?,
                 None => line_a(p, *radius),
             };
-            Some(Measure::Curved { ratio: a / radius, what: format!("a/R with R = {radius:e} m") })
+            Some(Measure::Curved {
+                ratio: a / radius,
+                what: format!("a/R with R = {}", eng(radius.abs(), "m")),
+            })
         }
-        (Geometry::Sphere { radius }, NormalLoad::HalfWidth(a)) => {
-            Some(Measure::Curved { ratio: a / radius, what: format!("a/R with R = {radius:e} m") })
-        }
+        (Geometry::Sphere { radius }, NormalLoad::HalfWidth(a)) => Some(Measure::Curved {
+            ratio: a / radius,
+            what: format!("a/R with R = {}", eng(radius.abs(), "m")),
+        }),
         (Geometry::Sphere { radius }, NormalLoad::Force(p)) => Some(Measure::Curved {
             ratio: sphere_a(p, *radius) / radius,
-            what: format!("a/R with R = {radius:e} m"),
+            what: format!("a/R with R = {}", eng(radius.abs(), "m")),
         }),
         (Geometry::Ellipsoid(Ellipse::Radii { rx, ry }), NormalLoad::Force(p)) => {
             let re = (rx * ry).sqrt();
             Some(Measure::Curved {
                 ratio: sphere_a(p, re) / rx.min(*ry),
                 what: format!(
-                    "a/R with a the equivalent sphere's and R = min(Rx, Ry) = {:e} m",
-                    rx.min(*ry)
+                    "a/R with a the equivalent sphere's and R = min(Rx, Ry) = {}",
+                    eng(rx.min(*ry), "m")
                 ),
             })
         }
@@ -620,30 +629,33 @@ pub(crate) fn magnitudes(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
             match (s.profile, n) {
                 (Profile::Sphere { radius }, NormalLoad::Force(p)) => Some(Measure::Curved {
                     ratio: sphere_a(p, radius) / radius,
-                    what: format!("a/R with R = {radius:e} m"),
+                    what: format!("a/R with R = {}", eng(radius.abs(), "m")),
                 }),
                 (Profile::Sphere { radius }, NormalLoad::Approach(d)) => Some(Measure::Curved {
                     ratio: (radius * d).sqrt() / radius,
-                    what: format!("a/R = sqrt(d/R) with R = {radius:e} m"),
+                    what: format!("a/R = sqrt(d/R) with R = {}", eng(radius.abs(), "m")),
                 }),
                 (Profile::Ellipsoid { radii }, NormalLoad::Force(p)) => {
                     let r = radii[0].min(radii[1]);
                     Some(Measure::Curved {
                         ratio: sphere_a(p, (radii[0] * radii[1]).sqrt()) / r,
-                        what: format!("a/R with R = min(radii) = {r:e} m"),
+                        what: format!("a/R with R = min(radii) = {}", eng(r, "m")),
                     })
                 }
                 (Profile::Ellipsoid { radii }, NormalLoad::Approach(d)) => {
                     let r = radii[0].min(radii[1]);
                     Some(Measure::Curved {
                         ratio: (d / r).sqrt(),
-                        what: format!("a/R = sqrt(d/R) with R = min(radii) = {r:e} m"),
+                        what: format!("a/R = sqrt(d/R) with R = min(radii) = {}", eng(r, "m")),
                     })
                 }
                 (Profile::Cylinder { radius, length, .. }, NormalLoad::Force(p)) => {
                     Some(Measure::Curved {
                         ratio: line_a(p / length, radius) / radius,
-                        what: format!("a/R with R = {radius:e} m (load per roller length)"),
+                        what: format!(
+                            "a/R with R = {} (load per roller length)",
+                            eng(radius.abs(), "m")
+                        ),
                     })
                 }
                 (Profile::Punch { radius, .. }, NormalLoad::Force(p)) => Some(Measure::Flat {
@@ -690,7 +702,8 @@ pub(crate) fn magnitudes(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
         ErrorKind::OutOfRange,
         load_key,
         format!(
-            "the contact's dimensionless size {what} is {ratio:.3e}, outside the range verified in double precision, {lo:e} to {hi:e} (E* = {es:.4e} Pa)"
+            "the contact's dimensionless size {what} is {ratio:.3e}, outside the range verified in double precision, {lo:e} to {hi:e} (E* = {})",
+            eng(es, "Pa")
         ),
         format!("change the load, the radius or the moduli to bring it inside: {why}"),
     ))

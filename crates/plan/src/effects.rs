@@ -8,6 +8,7 @@ use super::recipe::{
     Tangential,
 };
 use super::{Effect, EffectPlan, Technique};
+use stickslip_scene::eng::eng;
 use stickslip_scene::{Method, Motion, Scene, Substrate};
 
 impl Recipe {
@@ -186,7 +187,7 @@ pub(super) fn effects(
     match (visco(scene), scene.substrate) {
         (Some(true), Substrate::Viscoelastic { alpha, beta, .. }) => effects.push(on(
             E::Viscoelasticity,
-            format!("standard solid with alpha = {alpha} s > beta = {beta} s"),
+            format!("standard solid with alpha = {} > beta = {}", eng(alpha, "s"), eng(beta, "s")),
             Technique::Goryacheva,
         )),
         (Some(false), _) => effects.push(off(
@@ -212,7 +213,7 @@ pub(super) fn effects(
             if !matches!(r.tangential, stickslip_wheelrail::Tangential::None) {
                 effects.push(on(
                     E::Rolling,
-                    format!("a wheelset rolling at V = {speed} m/s with pitch rate {omega} rad/s: each patch's creepages (longitudinal, lateral, spin) from the motion, the position and the patch's contact angle and rolling radius; creep forces by {method}"),
+                    format!("a wheelset rolling at V = {} with pitch rate {}: each patch's creepages (longitudinal, lateral, spin) from the motion, the position and the patch's contact angle and rolling radius; creep forces by {method}", eng(speed, "m/s"), eng(omega, "rad/s")),
                     t,
                 ));
             } else {
@@ -227,7 +228,7 @@ pub(super) fn effects(
         }
         (Recipe::Rolling(r), Motion::Rolling { speed, creep }) => effects.push(on(
             E::Rolling,
-            format!("rolling at w = {speed} m/s, creep {creep}"),
+            format!("rolling at w = {}, creep {}", eng(speed, "m/s"), eng(creep, "")),
             r.model.technique(),
         )),
         (
@@ -242,7 +243,13 @@ pub(super) fn effects(
             };
             effects.push(on(
                 E::Rolling,
-                format!("3D steady rolling at V = {speed} m/s, creepages xi = {longitudinal}, eta = {lateral}, spin = {spin} 1/m; {why}"),
+                format!(
+                    "3D steady rolling at V = {}, creepages xi = {}, eta = {}, spin = {} 1/m; {why}",
+                    eng(speed, "m/s"),
+                    eng(longitudinal, ""),
+                    eng(lateral, ""),
+                    eng(spin, "")
+                ),
                 t.technique(),
             ));
             if !bodies.identical {
@@ -254,9 +261,11 @@ pub(super) fn effects(
 
     let path_moment = l.history.as_ref().and_then(|h| h.moment.as_ref());
     match (recipe, l.moment != 0.0, path_moment) {
-        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true, _) => {
-            effects.push(on(E::Twist, format!("moment M = {} N m", l.moment), t.technique()))
-        }
+        (Recipe::Contact(ContactRecipe { tangential: Some(t), .. }), true, _) => effects.push(on(
+            E::Twist,
+            format!("moment M = {}", eng(l.moment, "N m")),
+            t.technique(),
+        )),
         (Recipe::Contact(_), _, Some(m)) => effects.push(on(
             E::Twist,
             format!("a moment along the load path ({} corner values)", m.len()),

@@ -303,3 +303,111 @@ fn random_magnitudes_are_solved_or_refused_with_exit_2_never_3_never_a_panic() {
     );
     assert!(solved > 400 && refused > 400, "{solved} solved, {refused} refused");
 }
+
+/// One square patch of side 1 cm at pressure `p` on a body of modulus `e`, with a tangential
+/// force of a quarter of what friction carries.
+fn patch(p: f64, e: f64) -> String {
+    let f = 0.3;
+    let t = 0.25 * f * p * 1e-4;
+    format!(
+        "[geometry]\nkind = \"patches\"\npatches = [{{ shape = \"square\", centre = [0.0, 0.0], side = 0.01, pressure = {p:e} }}]\n[substrate]\ne = {e:e}\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\ntangential = {t:e}\nfriction = {f}\n[solver]\ngrid = 8\n"
+    )
+}
+
+#[test]
+fn patch_pressures_at_both_ends() {
+    let (p, e) = (ranges::PRESSURE, ranges::MODULUS);
+    // The low end on the softest body allowed.
+    expect_solved("pressure lo", &patch(p.lo * IN, e.lo * IN));
+    // The high end: 1e12 Pa is more than a tenth of the stiffest composite modulus allowed
+    // (E* = 1e13 / (2 (1 - nu^2)) = 5.5e12 Pa), so just inside the pressure's own range it
+    // is the combination p/E* that refuses it, at the load's key, not the pressure's range;
+    // a tenth of E* below that is solved.
+    let es_max = e.hi / IN / (2.0 * (1.0 - 0.09));
+    expect_solved("pressure 0.09 E*max", &patch(0.09 * es_max, e.hi / IN));
+    match solve(&patch(p.hi / IN, e.hi / IN)) {
+        Ok(_) => {
+            panic!("p = 1e12 Pa on E = 1e13 Pa solved: p/E* = 0.18 is beyond linear elasticity")
+        }
+        Err(err) => {
+            assert_eq!(err.exit_code(), 2, "{err}");
+            assert!(err.to_string().contains("dimensionless size"), "{err}");
+        }
+    }
+    let key = "geometry.patches[0].pressure";
+    expect_refused("pressure below", &patch(p.lo / OUT, e.lo * IN), key);
+    expect_refused("pressure above", &patch(p.hi * OUT, e.hi / IN), key);
+    expect_refused("pressure 5e-324", &patch(5e-324, 2e11), key);
+}
+
+/// A sphere of radius `r` and modulus `e` pressed by `p`, twisted by `m`, friction `f`.
+fn twisted(r: f64, e: f64, p: f64, f: f64, m: f64) -> String {
+    format!(
+        "[geometry]\nkind = \"sphere\"\nradius = {r:e}\n[substrate]\ne = {e:e}\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nnormal = {p:e}\nfriction = {f:e}\nmoment = {m:e}\n"
+    )
+}
+
+#[test]
+fn moments_at_both_ends() {
+    let m = ranges::MOMENT;
+    // Low end: a micrometre sphere at a nanonewton; the full-slip moment (3 pi/16) f P a is
+    // about 2e-18 N m, far above 1e-21 N m.
+    expect_solved("moment lo", &twisted(1e-6, 1e9, 1e-9, 0.3, m.lo * IN));
+    // High end: a 10 km sphere of a soft solid (E = 1 MPa) under 1e12 N: a = 2.4 km
+    // (a/R = 0.24) and the full-slip moment at f = 10 is 1.4e16 N m, above 1e16 N m.
+    let f = ranges::FRICTION.hi / IN;
+    expect_solved("moment hi", &twisted(1e4, 1e6, 1e12, f, m.hi / IN));
+    expect_refused("moment below", &twisted(1e-6, 1e9, 1e-9, 0.3, m.lo / OUT), "load.moment");
+    expect_refused("moment above", &twisted(1e4, 1e6, 1e12, f, m.hi * OUT), "load.moment");
+    expect_refused("moment 5e-324", &twisted(1e-2, 2e11, 100.0, 0.3, 5e-324), "load.moment");
+}
+
+/// A steel cylinder (2D, Carter) rolling with creep ratio `c`.
+fn carter(c: f64) -> String {
+    format!(
+        "[geometry]\nkind = \"cylinder\"\nradius = 0.46\n[substrate]\ne = 2.1e11\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nnormal = 5e5\nfriction = 0.3\n[motion]\nkind = \"rolling\"\nspeed = 20\ncreep = {c:e}\n"
+    )
+}
+
+/// An ellipsoid rolling in 3D with creepages (xi, eta, spin).
+fn rolling3d(xi: f64, eta: f64, spin: f64) -> String {
+    format!(
+        "[geometry]\nkind = \"ellipsoid\"\nradii = [0.46, 0.3]\n[substrate]\ne = 2.1e11\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\nnormal = 1e5\nfriction = 0.3\n[motion]\nkind = \"rolling\"\nspeed = 20\ncreepage = {{ longitudinal = {xi:e}, lateral = {eta:e}, spin = {spin:e} }}\n[solver]\nmethod = \"fastsim\"\n"
+    )
+}
+
+#[test]
+fn creep_at_both_ends() {
+    let c = ranges::CREEP;
+    for v in [0.0, c.lo * IN, -c.lo * IN, c.hi / IN, -c.hi / IN] {
+        expect_solved(&format!("creep {v:e}"), &carter(v));
+    }
+    for v in [c.lo / OUT, c.hi * OUT, 1e300, 5e-324] {
+        expect_refused(&format!("creep {v:e}"), &carter(v), "motion.creep");
+    }
+    for v in [c.lo * IN, c.hi / IN] {
+        expect_solved(&format!("creepage {v:e}"), &rolling3d(v, 0.0, 0.0));
+        expect_solved(&format!("lateral creepage {v:e}"), &rolling3d(0.0, -v, 0.0));
+    }
+    expect_refused(
+        "creepage below",
+        &rolling3d(c.lo / OUT, 0.0, 0.0),
+        "motion.creepage.longitudinal",
+    );
+    expect_refused("creepage above", &rolling3d(0.0, c.hi * OUT, 0.0), "motion.creepage.lateral");
+    expect_refused("spin above", &rolling3d(0.0, 0.0, c.hi * OUT), "motion.creepage.spin");
+}
+
+/// Issue 33 item 2: a refusal writes its quantities in engineering units (four significant
+/// digits, an SI prefix per value), and the planner's reasons do too.
+#[test]
+fn refusals_and_reasons_are_written_in_engineering_units() {
+    let e = solve(&sphere(1e-2, 1.7e308, 100.0, 0.3, 0.0)).unwrap_err();
+    let msg = e.to_string();
+    assert!(msg.contains("1.700e308 Pa") && msg.contains("1.000 Pa to 10.00 TPa"), "{msg}");
+    let e = solve(&twisted(1e-2, 2e11, 100.0, 0.3, 1e3)).unwrap_err();
+    assert!(e.to_string().contains("|M| = 1.000 kN m exceeds"), "{e}");
+    let s = Scene::from_toml_str(&twisted(1e-2, 2e11, 100.0, 0.3, 2.5e-3), None).unwrap();
+    let plan = stickslip_run::Plan::new(&s).unwrap();
+    assert!(plan.explain().contains("moment M = 2.500 mN m"), "{}", plan.explain());
+}

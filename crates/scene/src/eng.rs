@@ -85,6 +85,20 @@ pub fn eng(v: f64, unit: &str) -> String {
     format!("{m:.*} {}{unit}", decimals(m), PREFIXES[(e - FIRST) as usize])
 }
 
+/// The one SI prefix for a set of values whose largest magnitude is `maxabs` (a plot axis or
+/// a colour scale, where every tick shares the unit): the divisor and the prefixed unit,
+/// with the prefix rules of [`eng`] (femto to tera, squared and cubed first atoms). An empty
+/// unit (a ratio), a zero or a non-finite `maxabs` gets no prefix.
+pub fn common_prefix(maxabs: f64, unit: &str) -> (f64, String) {
+    if unit.is_empty() || !(maxabs.is_finite() && maxabs > 0.0) {
+        return (1.0, unit.to_string());
+    }
+    let n = power_of_first_atom(unit);
+    let e = (((maxabs.log10() - 3.0) / (3 * n) as f64).floor() as i32 + 1)
+        .clamp(FIRST, FIRST + PREFIXES.len() as i32 - 1);
+    (10f64.powi(3 * n * e), format!("{}{unit}", PREFIXES[(e - FIRST) as usize]))
+}
+
 /// As [`eng`], but a value within [`ZERO_RELATIVE`] times `scale` of zero is written `0 unit`.
 /// `scale` is the characteristic magnitude of the quantity in the run (the normal load for
 /// forces, the peak pressure for stresses, the contact size for lengths, ...).
@@ -98,6 +112,20 @@ pub fn eng_scaled(v: f64, scale: f64, unit: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn common_prefixes() {
+        assert_eq!(common_prefix(7.5e-5, "m"), (1e-6, "µm".to_string()));
+        assert_eq!(common_prefix(8.6e8, "Pa"), (1e6, "MPa".to_string()));
+        assert_eq!(common_prefix(999.0, "N"), (1.0, "N".to_string()));
+        assert_eq!(common_prefix(1000.0, "N"), (1e3, "kN".to_string()));
+        // a squared first atom takes one step of a squared prefix: 0.01459 mm^2
+        assert_eq!(common_prefix(1.459e-8, "m^2"), (1e-6, "mm^2".to_string()));
+        assert_eq!(common_prefix(0.5, "").1, "");
+        assert_eq!(common_prefix(0.0, "m"), (1.0, "m".to_string()));
+        // beyond tera the largest prefix is kept (the ticks carry the rest)
+        assert_eq!(common_prefix(1e20, "Pa").1, "TPa");
+    }
 
     #[test]
     fn plain_units() {

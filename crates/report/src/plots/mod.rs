@@ -57,14 +57,11 @@ struct Units {
 
 impl Units {
     /// The prefix that puts the largest magnitude `maxabs` in [1, 1000) (no prefix for an
-    /// empty base unit, i.e. a ratio).
+    /// empty base unit, i.e. a ratio): the terminal's and the report's prefix rules
+    /// (`stickslip_scene::eng::common_prefix`).
     fn for_max(maxabs: f64, base: &str) -> Units {
-        if base.is_empty() || !(maxabs.is_finite() && maxabs > 0.0) {
-            return Units { div: 1.0, unit: base.to_string() };
-        }
-        let e3 = ((maxabs.log10() / 3.0).floor() as i32).clamp(-4, 3);
-        let prefix = ["p", "n", "µ", "m", "", "k", "M", "G"][(e3 + 4) as usize];
-        Units { div: 10f64.powi(3 * e3), unit: format!("{prefix}{base}") }
+        let (div, unit) = stickslip_scene::eng::common_prefix(maxabs, base);
+        Units { div, unit }
     }
 
     fn of(v: impl Iterator<Item = f64>, base: &str) -> Units {

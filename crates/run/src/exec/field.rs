@@ -24,6 +24,7 @@ use super::{linspace, solver_err, Ctx};
 use crate::plan::recipe::{
     ContactField, ContactFieldMethod, LineField, LineFieldMethod, LineFriction,
 };
+use stickslip_scene::eng::eng;
 use stickslip_scene::{FieldScale, SceneError};
 
 /// The stresses on the field grid (empty arrays when not asked for).
@@ -214,13 +215,13 @@ pub(crate) fn contact(
             }
             if periodic {
                 format!(
-                    "periodic lattice of {} x {} cells of {:.3e} x {:.3e} m (one period of the surface), FFT per depth layer with the periodic half-space transfer, bilinear between cell centres across the period; the mean traction's in-plane stresses (sxx, syy, sxy of the zero frequency) are not determined by a periodic half-space and are left out",
-                    fl.nx, fl.ny, fl.hx, fl.hy
+                    "periodic lattice of {} x {} cells of {} x {} (one period of the surface), FFT per depth layer with the periodic half-space transfer, bilinear between cell centres across the period; the mean traction's in-plane stresses (sxx, syy, sxy of the zero frequency) are not determined by a periodic half-space and are left out",
+                    fl.nx, fl.ny, eng(fl.hx, "m"), eng(fl.hy, "m")
                 )
             } else {
                 format!(
-                    "lattice of {} x {} cells of {:.3e} x {:.3e} m (the contact's), FFT per depth layer, bilinear between cell centres",
-                    fl.nx, fl.ny, fl.hx, fl.hy
+                    "lattice of {} x {} cells of {} x {} (the contact's), FFT per depth layer, bilinear between cell centres",
+                    fl.nx, fl.ny, eng(fl.hx, "m"), eng(fl.hy, "m")
                 )
             }
         }

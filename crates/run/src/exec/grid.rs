@@ -15,6 +15,7 @@ use super::normal::ContactSolution;
 use super::outcome::{GridZones, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, Force, GridMethod};
+use stickslip_scene::eng::eng_scaled;
 use stickslip_scene::{ErrorKind, SceneError, SurfaceBoundary};
 
 /// The grid solve of `method` under a force, a moment, or both.
@@ -85,6 +86,11 @@ pub(crate) fn solve(
     }
     let gz = GridZones::from_states(&sol.state);
     let across = -sol.shift.0 * e.1 + sol.shift.1 * e.0;
+    // Scales for the note: what is below 1e-12 of them is rounding and is written 0.
+    let reach = grid.x.iter().chain(&grid.y).fold(0.0f64, |m, v| m.max(v.abs()));
+    let force_scale = sol.resultant.0.hypot(sol.resultant.1).max(sol.moment.abs() / reach);
+    let moment_scale = sol.moment.abs().max(force_scale * reach);
+    let shift_scale = sol.shift.0.hypot(sol.shift.1).max(sol.rotation.abs() * reach);
     let note = match method {
         GridMethod::Lp => format!(
             "modified LP on {} elements ({} stick, {} slip), {} pivots; per-patch forces: {}",
@@ -102,7 +108,7 @@ pub(crate) fn solve(
                 .join("; ")
         ),
         GridMethod::Fast => format!(
-            "fast solver on {} elements ({} stick, {} slip; {:?}): {} Newton steps, {} CG iterations; residual {:.3e}; set-up {:.3} s, iteration {:.3} s; resultant ({:.6e}, {:.6e}) N, moment {:.6e} N m about ({:.6e}, {:.6e}) m; shift across the load {:.3e} m{}",
+            "fast solver on {} elements ({} stick, {} slip; {:?}): {} Newton steps, {} CG iterations; residual {:.3e}; set-up {:.3} s, iteration {:.3} s; resultant ({}, {}), moment {} about ({}, {}); shift across the load {}{}",
             grid.len(),
             gz.stick,
             gz.slip,
@@ -112,12 +118,12 @@ pub(crate) fn solve(
             sol.info.residual,
             sol.info.setup_seconds,
             sol.info.solve_seconds,
-            sol.resultant.0,
-            sol.resultant.1,
-            sol.moment,
-            sol.centre.0,
-            sol.centre.1,
-            across,
+            eng_scaled(sol.resultant.0, force_scale, "N"),
+            eng_scaled(sol.resultant.1, force_scale, "N"),
+            eng_scaled(sol.moment, moment_scale, "N m"),
+            eng_scaled(sol.centre.0, reach, "m"),
+            eng_scaled(sol.centre.1, reach, "m"),
+            eng_scaled(across, shift_scale, "m"),
             if with_force && moment.is_some() {
                 "; per-body shares are of the shift (both the shift and the rotation are reported)"
             } else {

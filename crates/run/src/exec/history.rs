@@ -26,6 +26,7 @@ use super::normal::{surface_err, surface_gap, surface_solution, ContactSolution}
 use super::outcome::{GridZones, HistoryLoopOut, HistoryOut, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, HistoryRecipe};
+use stickslip_scene::eng::eng;
 use stickslip_scene::{ErrorKind, HistoryControl, SceneError, SurfaceBoundary};
 
 /// Errors of the pressure model and of the history, kept apart until they are located.
@@ -84,7 +85,10 @@ fn hertz_on(grid: &ContactGrid, a: f64, b: f64, load: f64) -> Result<Vec<f64>, S
         return Err(SceneError::new(
             ErrorKind::Solver,
             format!(
-                "the contact at the normal load {load:.4e} N (semi-axes {a:.3e} x {b:.3e} m) holds no cell centre of the lattice"
+                "the contact at the normal load {} (semi-axes {} x {}) holds no cell centre of the lattice",
+                eng(load, "N"),
+                eng(a, "m"),
+                eng(b, "m")
             ),
         )
         .key("solver.grid")
@@ -403,7 +407,7 @@ pub(crate) fn run(
         })
         .collect();
     cx.notes.push(format!(
-        "load path: {} steps ({} corners, {} between), {} fast solves, {} Newton steps, {} operator products, largest residual {:.2e}; the steps took {:.3} s; {} loop{}{}; energy dissipated over the path {:.6e} J",
+        "load path: {} steps ({} corners, {} between), {} fast solves, {} Newton steps, {} operator products, largest residual {:.2e}; the steps took {:.3} s; {} loop{}{}; energy dissipated over the path {}",
         steps.len(),
         h.tangential.len(),
         h.steps,
@@ -419,10 +423,10 @@ pub(crate) fn run(
         } else {
             format!(
                 " (energy per cycle {})",
-                loops.iter().map(|l| format!("{:.6e} J", l.energy)).collect::<Vec<_>>().join(", ")
+                loops.iter().map(|l| eng(l.energy, "J")).collect::<Vec<_>>().join(", ")
             )
         },
-        last.dissipated
+        eng(last.dissipated, "J")
     ));
     if steps.iter().any(|s| s.regime == stickslip_traction::Regime::GrossSlip) {
         cx.notes.push(format!(

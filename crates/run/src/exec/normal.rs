@@ -13,6 +13,7 @@ use super::lattice::Lattice;
 use super::outcome::{LoadCurve, NormalSolverOut};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, LineLoad, LineNormal, SurfaceLoad};
+use stickslip_scene::eng::eng;
 use stickslip_scene::{patch_bounds, ErrorKind, NormalSweep, Patch, SceneError, SurfaceBoundary};
 
 /// The normal solution of a line contact.
@@ -84,8 +85,8 @@ pub(crate) fn line(
             }
             .map_err(|e| solver_err("2D Hertz", e))?;
             cx.notes.push(format!(
-                "2D contact: no absolute indentation exists; the approach relative to the surface point at 10 a is {:.6e} m",
-                h.approach_relative(10.0 * h.half_width())
+                "2D contact: no absolute indentation exists; the approach relative to the surface point at 10 a is {}",
+                eng(h.approach_relative(10.0 * h.half_width()), "m")
             ));
             LineContact {
                 a: h.half_width(),
@@ -362,9 +363,9 @@ fn sharp_punch(
         peak_pressure_grid_dependent: true,
     };
     cx.notes.push(format!(
-        "sharp-edged flat punch: the pressure is singular at the edge, p ~ 1/sqrt(a^2 - r^2) (Boussinesq), so the peak pressure {:.4e} Pa is that of the edge cells and grows as the cells shrink: it depends on the lattice, not on the contact. Against Boussinesq at the area-equivalent radius a = {:.6e} m ({} face cells, {:.0} cells across): force {:+.3e} relative, pressure within r <= a/2 {:.3e} relative (see `punch` in result.json)",
-        sol.peak_pressure,
-        a,
+        "sharp-edged flat punch: the pressure is singular at the edge, p ~ 1/sqrt(a^2 - r^2) (Boussinesq), so the peak pressure {} is that of the edge cells and grows as the cells shrink: it depends on the lattice, not on the contact. Against Boussinesq at the area-equivalent radius a = {} ({} face cells, {:.0} cells across): force {:+.3e} relative, pressure within r <= a/2 {:.3e} relative (see `punch` in result.json)",
+        eng(sol.peak_pressure, "Pa"),
+        eng(a, "m"),
         out.face_cells,
         out.cells_across,
         out.force_error,
@@ -389,8 +390,8 @@ pub(crate) fn surface_solution(
         return Err(SceneError::new(
             ErrorKind::Impossible,
             format!(
-                "the approach {:.3e} m does not close the gap: zero load, no contact",
-                sol.approach
+                "the approach {} does not close the gap: zero load, no contact",
+                eng(sol.approach, "m")
             ),
         )
         .key("load.approach")
@@ -445,9 +446,11 @@ pub(crate) fn surface_solution(
     if let Some(h) = sol.hardness {
         let wmax = sol.plastic_displacement.iter().copied().fold(0.0, f64::max);
         cx.notes.push(format!(
-            "hardness cap {h:.4e} Pa (interface.hardness): {} plastic cells, {:.4} of the contact, largest plastic displacement {wmax:.3e} m{}; later stages take the capped pressure",
+            "hardness cap {} (interface.hardness): {} plastic cells, {:.4} of the contact, largest plastic displacement {}{}; later stages take the capped pressure",
+            eng(h, "Pa"),
             sol.plastic_cells,
             sol.plastic_fraction,
+            eng(wmax, "m"),
             match sol.info.approach_steps {
                 0 => String::new(),
                 k => format!("; force control by {k} approach-controlled solves (secant on the approach)"),

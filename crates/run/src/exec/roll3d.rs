@@ -19,6 +19,7 @@ use super::outcome::{GridZones, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactRecipe, RollingStep};
 use stickslip_halfspace::material::Compliance;
+use stickslip_scene::eng::eng;
 use stickslip_scene::{ErrorKind, SceneError};
 
 /// The combined shear modulus and Poisson ratio of Kalker's normalisation:
@@ -69,7 +70,8 @@ pub(crate) fn solve(
             }
         }
         cx.notes.push(format!(
-            "Polach's creep-force law: forces only (no traction, stick or slip map); G = {g:.6e} Pa, nu = {nu}"
+            "Polach's creep-force law: forces only (no traction, stick or slip map); G = {}, nu = {nu}",
+            eng(g, "Pa")
         ));
         return Ok(TangentialOut {
             creep: Some([fx, fy, 0.0]),
@@ -104,7 +106,7 @@ pub(crate) fn solve(
     let capacity = r.friction * n.load;
     let ratio = sol.fx.hypot(sol.fy) / capacity;
     cx.notes.push(format!(
-        "{} on {} elements: {} stick, {} slip{}; |F|/(fN) = {ratio:.6}; G = {g:.6e} Pa, nu = {nu}{}",
+        "{} on {} elements: {} stick, {} slip{}; |F|/(fN) = {ratio:.6}; G = {}, nu = {nu}{}",
         match step.method {
             RollingMethod::Fastsim => "FASTSIM".to_string(),
             _ => format!(
@@ -115,8 +117,17 @@ pub(crate) fn solve(
         sol.x.len(),
         stick,
         sol.stick.len() - stick,
-        if stick == 0 { " (full slip: every element slides; the creepage is beyond saturation)" } else { "" },
-        if r.bodies.identical { "" } else { "; bodies treated as quasi-identical (normal-tangential coupling neglected)" },
+        if stick == 0 {
+            " (full slip: every element slides; the creepage is beyond saturation)"
+        } else {
+            ""
+        },
+        eng(g, "Pa"),
+        if r.bodies.identical {
+            ""
+        } else {
+            "; bodies treated as quasi-identical (normal-tangential coupling neglected)"
+        },
     ));
     Ok(TangentialOut {
         creep: Some([sol.fx, sol.fy, sol.mz]),

@@ -12,6 +12,7 @@ use super::{
     Cycle, Elastic, Ellipse, FieldGrid, Geometry, History, HistoryControl, Indenter, Motion,
     NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Substrate, MAX_GRID,
 };
+use crate::eng::eng;
 use crate::error::{ErrorKind, Issue};
 
 /// Every check of `scene`; the first refusal.
@@ -74,15 +75,21 @@ fn finite(key: &str, v: f64) -> Result<f64, Issue> {
     }
 }
 
-/// The message and hint of a magnitude outside `r`.
+/// The message and hint of a magnitude outside `r`, in engineering units
+/// ([`crate::eng`]); a value that rounds to a bound's four digits is written in full.
 fn outside(key: &str, v: f64, r: &Range) -> Issue {
-    let u = if r.unit.is_empty() { String::new() } else { format!(" {}", r.unit) };
+    let (lo, hi) = (eng(r.lo, r.unit), eng(r.hi, r.unit));
+    let mut found = eng(v, r.unit);
+    if found == lo || found == hi {
+        let u = if r.unit.is_empty() { String::new() } else { format!(" {}", r.unit) };
+        found = format!("{v:e}{u}");
+    }
     Issue::new(
         ErrorKind::OutOfRange,
         key,
         format!(
-            "{} {v:e}{u} is outside the range verified in double precision, {:e}{u} to {:e}{u}",
-            r.name, r.lo, r.hi
+            "{} {found} is outside the range verified in double precision, {lo} to {hi}",
+            r.name
         ),
     )
     .hint(r.why)
@@ -174,7 +181,7 @@ fn wheel_rail(w: &super::WheelRail) -> Result<(), Issue> {
         ("position.roll", w.position.roll),
     ] {
         if !(v.is_finite() && v.abs() < quarter) {
-            return Err(Issue::new(ErrorKind::OutOfRange, key, format!("angle {v} rad is not allowed"))
+            return Err(Issue::new(ErrorKind::OutOfRange, key, format!("angle {} is not allowed", eng(v, "rad")))
                 .hint("a finite angle below 45 deg in size; write it with its unit, e.g. \"4.8 mrad\" (rail cants are about 1:40, 25 mrad; yaw and roll a few mrad)"));
         }
     }
@@ -226,7 +233,7 @@ fn surface(s: &super::Surface) -> Result<(), Issue> {
                 return Err(Issue::new(
                     ErrorKind::OutOfRange,
                     "geometry.profile.crown",
-                    format!("crown {crown:e} m"),
+                    format!("crown {}", eng(crown, "m")),
                 )
                 .hint("the crown drop at the roller ends is a length >= 0 (0: no crown)"));
             }
@@ -237,18 +244,21 @@ fn surface(s: &super::Surface) -> Result<(), Issue> {
                     return Err(Issue::new(
                         ErrorKind::OutOfRange,
                         "geometry.profile.crown",
-                        format!("a crown of {crown:e} m with end radius {end_radius:e} m needs rounded ends {end:e} m long, more than half the length {length:e} m"),
+                        format!(
+                            "a crown of {} with end radius {} needs rounded ends {} long, more than half the length {}",
+                            eng(crown, "m"), eng(end_radius, "m"), eng(end, "m"), eng(length, "m")
+                        ),
                     )
-                    .hint(format!("at most crown = length^2/(8 end_radius) = {:e} m, or a smaller end_radius", length * length / (8.0 * end_radius))));
+                    .hint(format!("at most crown = length^2/(8 end_radius) = {}, or a smaller end_radius", eng(length * length / (8.0 * end_radius), "m"))));
                 }
             }
             if s.size[1] < length {
                 return Err(Issue::new(
                     ErrorKind::OutOfRange,
                     "geometry.size",
-                    format!("the lattice is {:e} m long in y but the roller is {length:e} m long", s.size[1]),
+                    format!("the lattice is {} long in y but the roller is {} long", eng(s.size[1], "m"), eng(length, "m")),
                 )
-                .hint(format!("make size[1] at least the roller length {length:e} m (a little more shows its ends), or shorten the roller")));
+                .hint(format!("make size[1] at least the roller length {} (a little more shows its ends), or shorten the roller", eng(length, "m"))));
             }
         }
         Profile::Flat => {}
@@ -313,7 +323,10 @@ fn patches(ps: &[Patch]) -> Result<(), Issue> {
             return Err(Issue::new(
                 ErrorKind::OutOfRange,
                 &pk,
-                format!("a patch with no compressive pressure ({} Pa) carries no load", p.pressure),
+                format!(
+                    "a patch with no compressive pressure ({}) carries no load",
+                    eng(p.pressure, "Pa")
+                ),
             )
             .hint("pressure > 0; leave the patch out if it is not in contact"));
         }
@@ -385,7 +398,7 @@ fn substrate(s: &Substrate) -> Result<(), Issue> {
                 return Err(Issue::new(
                     ErrorKind::OutOfRange,
                     "substrate.alpha",
-                    format!("alpha = {alpha} s is less than beta = {beta} s"),
+                    format!("alpha = {} is less than beta = {}", eng(alpha, "s"), eng(beta, "s")),
                 )
                 .hint("the standard solid eps + alpha eps' = (sigma + beta sigma')/E dissipates only for alpha > beta; alpha = beta is elastic"));
             }
@@ -440,7 +453,11 @@ fn load(scene: &Scene) -> Result<(), Issue> {
                     return Err(Issue::new(
                         ErrorKind::OutOfRange,
                         "load.normal",
-                        format!("the sweep starts at {} N, not below its end {p} N", sw.from),
+                        format!(
+                            "the sweep starts at {}, not below its end {}",
+                            eng(sw.from, force_range.unit),
+                            eng(p, force_range.unit)
+                        ),
                     )
                     .hint("write [from, to, steps] with 0 < from < to, e.g. [\"1 N\", \"100 N\", 20]"));
                 }
@@ -523,9 +540,9 @@ fn load(scene: &Scene) -> Result<(), Issue> {
                 ErrorKind::Impossible,
                 "load.tangential",
                 format!(
-                    "|T| = {} exceeds f P = {} : the contact slides, partial slip is impossible",
-                    l.tangential.abs(),
-                    l.friction * p
+                    "|T| = {} exceeds f P = {}: the contact slides, partial slip is impossible",
+                    eng(l.tangential.abs(), force_range.unit),
+                    eng(l.friction * p, force_range.unit)
                 ),
             )
             .hint("reduce T below f P, or set sliding = true"));
@@ -653,7 +670,8 @@ fn history(scene: &Scene) -> Result<(), Issue> {
                 ErrorKind::Impossible,
                 &key("normal", i),
                 format!(
-                    "the normal load reaches {p} N at corner {i}{}: the bodies separate",
+                    "the normal load reaches {} at corner {i}{}: the bodies separate",
+                    eng(*p, "N"),
                     h.corner_origin(i)
                 ),
             )
@@ -676,9 +694,10 @@ fn history(scene: &Scene) -> Result<(), Issue> {
                     ErrorKind::Impossible,
                     &key(list, i),
                     format!(
-                        "at corner {i}{} the tangential {what} |T| = {} N exceeds f P = {cap} N: no equilibrium, the bodies slide",
+                        "at corner {i}{} the tangential {what} |T| = {} exceeds f P = {}: no equilibrium, the bodies slide",
                         h.corner_origin(i),
-                        t.abs()
+                        eng(t.abs(), "N"),
+                        eng(cap, "N")
                     ),
                 )
                 .hint("keep |T| <= f P at every corner, or prescribe the shift (shift = [...]) to let the contact slide"));
@@ -842,7 +861,7 @@ fn solver(s: &SolverOptions) -> Result<(), Issue> {
     if let Some([hx, hs]) = s.cell {
         for v in [hx, hs] {
             if !(v.is_finite() && v > 0.0 && v <= 0.1) {
-                return Err(Issue::new(ErrorKind::OutOfRange, "solver.cell", format!("element size {v} m is not allowed"))
+                return Err(Issue::new(ErrorKind::OutOfRange, "solver.cell", format!("element size {} is not allowed", eng(v, "m")))
                     .hint("two lengths > 0, about a tenth of the patch's semi-axes, e.g. cell = [\"0.2 mm\", \"0.2 mm\"]"));
             }
         }
