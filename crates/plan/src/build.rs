@@ -17,7 +17,7 @@ use super::recipe::{
     Bodies, ContactField, ContactFieldMethod, ContactNormal, ContactRecipe, Creepage, CycleRecipe,
     Force, GridMethod, GridStep, HistoryRecipe, LineDisplacements, LineField, LineFieldMethod,
     LineFriction, LineLoad, LineNormal, LineRecipe, LineSurface, Recipe, RollingMethod,
-    RollingModel, RollingRecipe, RollingStep, SurfaceLoad, Tangential,
+    RollingModel, RollingRecipe, RollingStep, SurfaceLoad, Tangential, TransientRecipe,
 };
 use super::refusal::{invalid, unsupported};
 use super::{Issue, Plan, SURFACE_POINTS};
@@ -508,7 +508,39 @@ fn rolling_step(
     } else {
         tol
     };
-    Ok(Tangential::Rolling(RollingStep { method, creepage, speed, tolerance }))
+    Ok(Tangential::Rolling(RollingStep { method, creepage, speed, tolerance, transient: None }))
+}
+
+/// Transient 3D rolling (`[motion.transient]`): the creep force `load.tangential` along
+/// `load.direction`, the spin creepage, steps of one element length by the fast solver.
+fn transient_step(
+    scene: &Scene,
+    speed: f64,
+    spin: f64,
+    t: stickslip_scene::Transient,
+) -> Result<Tangential, Issue> {
+    if !matches!(scene.solver.method, Method::Auto | Method::Fast) {
+        return Err(unsupported(
+            "solver.method",
+            "transient rolling is solved by the exact theory's transient form (each step a fast solve); FASTSIM, Polach and the LP have no transient form here",
+            "use method = \"auto\" or \"fast\"",
+        ));
+    }
+    let l = &scene.load;
+    let d = l.direction_deg.to_radians();
+    let tolerance = tolerance_for(scene, "the fast solver", FastConfig::TOLERANCE_RANGE)?;
+    Ok(Tangential::Rolling(RollingStep {
+        method: RollingMethod::Transient,
+        creepage: Creepage { longitudinal: 0.0, lateral: 0.0, spin },
+        speed,
+        tolerance,
+        transient: Some(TransientRecipe {
+            force: (l.tangential * d.cos(), l.tangential * d.sin()),
+            direction_deg: l.direction_deg,
+            shift_first: t.start == stickslip_scene::TransientStart::Shift,
+            distance: t.distance,
+        }),
+    }))
 }
 
 /// The body of a 3D contact.
@@ -626,8 +658,11 @@ fn contact_recipe(
         Ok(Tangential::Grid(GridStep { method, force, direction, moment, tolerance }))
     };
     let rolling = match scene.motion {
-        Motion::RollingCreepage { speed, longitudinal, lateral, spin } => {
+        Motion::RollingCreepage { speed, longitudinal, lateral, spin, transient: None } => {
             Some(rolling_step(scene, body, speed, Creepage { longitudinal, lateral, spin })?)
+        }
+        Motion::RollingCreepage { speed, spin, transient: Some(t), .. } => {
+            Some(transient_step(scene, speed, spin, t)?)
         }
         _ => None,
     };

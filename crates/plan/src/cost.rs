@@ -25,7 +25,8 @@ pub(crate) fn estimate(
     let grid_elements = elements;
     let lp = effects.iter().any(|e| matches!(e.technique, Some(T::LpForce | T::LpMoment)));
     let fast = effects.iter().any(|e| matches!(e.technique, Some(T::Fast | T::LoadHistory)));
-    let steady = effects.iter().any(|e| e.technique == Some(T::SteadyRolling));
+    let steady =
+        effects.iter().any(|e| matches!(e.technique, Some(T::SteadyRolling | T::TransientRolling)));
     if lp && grid_elements > MAX_LP_ELEMENTS {
         return Err(issue(
             ErrorKind::OutOfRange,
@@ -128,6 +129,13 @@ pub(crate) fn estimate(
             evals += n * n * 4;
             secs += (n * n) as f64 * 2e-7 + (n * n * n) as f64 * 2e-9;
             mem += lp_memory(grid_elements);
+        } else if effects.iter().any(|e| e.technique == Some(T::TransientRolling)) {
+            // Transient rolling: one warm fast solve per element length rolled; two contact
+            // lengths are about twice the lattice side in steps, each a few Newton steps of
+            // about ten FFT products (an estimate, not a measurement).
+            let steps = 2 * (cells as f64).sqrt().ceil() as u64;
+            evals += n * 30 * steps;
+            secs += (30 * steps) as f64 * 1e-7 * (4 * cells) as f64;
         } else if steady {
             // Exact steady rolling: a few Newton steps of tens of GMRES products each, one
             // FFT product per GMRES step. Measured (2 cores, tolerance 1e-8, ellipse with

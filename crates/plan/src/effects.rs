@@ -77,6 +77,7 @@ impl Tangential {
             Tangential::Rolling(r) => match r.method {
                 RollingMethod::Fastsim => Technique::Fastsim,
                 RollingMethod::Polach => Technique::Polach,
+                RollingMethod::Transient => Technique::TransientRolling,
                 _ => Technique::SteadyRolling,
             },
             Tangential::Grid(GridStep { method: GridMethod::Fast, .. }) => Technique::Fast,
@@ -233,7 +234,7 @@ pub(super) fn effects(
         )),
         (
             Recipe::Contact(ContactRecipe { tangential: Some(t @ Tangential::Rolling(r)), .. }),
-            Motion::RollingCreepage { speed, longitudinal, lateral, spin },
+            Motion::RollingCreepage { speed, longitudinal, lateral, spin, transient: None },
         ) => {
             let why = match (scene.solver.method, r.method) {
                 (Method::Auto, RollingMethod::Exact) => format!("the exact theory: solver.tolerance = {:e} is below FASTSIM's force error (0.1 fN)", scene.solver.tolerance),
@@ -254,6 +255,31 @@ pub(super) fn effects(
             ));
             if !bodies.identical {
                 notes.push("3D rolling treats the bodies as quasi-identical: the normal-tangential coupling (Dundurs beta) is neglected".to_string());
+            }
+        }
+        (
+            Recipe::Contact(ContactRecipe { tangential: Some(t @ Tangential::Rolling(r)), .. }),
+            Motion::RollingCreepage { speed, spin, transient: Some(tr), .. },
+        ) => {
+            let force = r.transient.map_or((0.0, 0.0), |x| x.force);
+            effects.push(on(
+                E::Rolling,
+                format!(
+                    "transient rolling at V = {} from {} under the creep force ({}, {}) on the indenter, spin = {} 1/m, over {} in steps of one element length; the creepages follow from the force",
+                    eng(speed, "m/s"),
+                    match tr.start {
+                        stickslip_scene::TransientStart::Shift => "a Cattaneo shift at rest",
+                        stickslip_scene::TransientStart::Rest => "rest",
+                    },
+                    eng(force.0, "N"),
+                    eng(force.1, "N"),
+                    eng(spin, ""),
+                    tr.distance.map_or("two contact lengths".to_string(), |d| eng(d, "m")),
+                ),
+                t.technique(),
+            ));
+            if !bodies.identical {
+                notes.push("transient rolling treats the bodies as quasi-identical: the normal-tangential coupling (Dundurs beta) is neglected".to_string());
             }
         }
         _ => effects.push(off(E::Rolling, "motion is static".to_string())),

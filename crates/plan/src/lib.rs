@@ -197,11 +197,15 @@ pub enum Technique {
     /// friction, each step the fast solver's problem with the memory $-K\mathbf q^{n-1}$;
     /// docs/load-histories.md): `stickslip_traction::history::HistoryProblem`.
     LoadHistory,
+    /// 3D rolling in time steps of one element length from a start state (Kalker's
+    /// transient discretisation, each step a warm fast solve):
+    /// `stickslip_rolling::steady3d::TransientRolling`.
+    TransientRolling,
 }
 
 impl Technique {
     /// Every technique, in the order of declaration.
-    pub const ALL: [Technique; 31] = [
+    pub const ALL: [Technique; 32] = [
         Technique::HertzLine,
         Technique::GradedCylinder,
         Technique::FlatPunch,
@@ -233,6 +237,7 @@ impl Technique {
         Technique::HamiltonSlidingField,
         Technique::HertzEllipseField,
         Technique::LoadHistory,
+        Technique::TransientRolling,
     ];
 
     /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
@@ -270,6 +275,7 @@ impl Technique {
             Technique::HamiltonSlidingField => 28,
             Technique::HertzEllipseField => 29,
             Technique::LoadHistory => 30,
+            Technique::TransientRolling => 31,
         }
     }
 
@@ -289,6 +295,7 @@ impl Technique {
                 | Technique::SteadyRolling
                 | Technique::Fastsim
                 | Technique::LoadHistory
+                | Technique::TransientRolling
         )
     }
 
@@ -354,6 +361,9 @@ impl Technique {
             }
             Technique::Polach => {
                 "Polach's closed creep-force law (no spin; FORMULAS.md R3); force error up to 0.15 fN against the exact theory"
+            }
+            Technique::TransientRolling => {
+                "transient rolling in steps of one element length from the start state (Kalker's transient discretisation, each step a warm fast solve; docs/load-histories.md), numerical"
             }
             Technique::LoadHistory => {
                 "load path step by step from the previous state (incremental Coulomb friction, each step a warm fast solve; docs/load-histories.md), numerical"

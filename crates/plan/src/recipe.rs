@@ -18,7 +18,9 @@ use stickslip_scene::{FieldGrid, Patch};
 /// What execution does.
 #[derive(Debug, Clone, PartialEq)]
 // Exhaustive on purpose: the executor (`stickslip-run`) matches every variant, so a new
-// kind of problem does not compile until it has its stages.
+// kind of problem does not compile until it has its stages. One recipe is made per run, so
+// the size of its largest variant costs nothing worth a box.
+#[allow(clippy::large_enum_variant)]
 pub enum Recipe {
     /// A static plane-strain contact (cylinder or punch), per unit length.
     Line(LineRecipe),
@@ -416,6 +418,23 @@ pub struct RollingStep {
     pub speed: f64,
     /// Relative tolerance of the exact solver's residual (unused by FASTSIM and Polach).
     pub tolerance: f64,
+    /// Rolled in steps from a start state instead of solved steady (method
+    /// `RollingMethod::Transient`; the creepages' longitudinal and lateral parts are then
+    /// unknowns, the creep force is given).
+    pub transient: Option<TransientRecipe>,
+}
+
+/// Transient rolling: the creep force held, where it starts, how far it rolls.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TransientRecipe {
+    /// The creep force on body 1 (the indenter), $(F_x, F_y)$ (N).
+    pub force: (f64, f64),
+    /// Direction of the force (degrees from +x), for the history's columns.
+    pub direction_deg: f64,
+    /// First a step at rest under the force (a Cattaneo shift), then rolling.
+    pub shift_first: bool,
+    /// Distance rolled (m); None: two contact lengths along x.
+    pub distance: Option<f64>,
 }
 
 /// Which grid solver.

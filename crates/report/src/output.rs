@@ -246,7 +246,28 @@ pub(crate) fn render(
         }
         files.push(("cycle.csv".to_string(), std::mem::take(&mut s)));
     }
-    if let Some(h) = &out.history {
+    if let Some(h) = out.history.as_ref().filter(|h| !h.distance.is_empty()) {
+        // Transient rolling: the creep forces and creepages along the distance rolled.
+        s.push_str("step,distance_m,fx_N,fy_N,mz_N_m,creepage_longitudinal,creepage_lateral,shift_m,stick_fraction,dissipated_J,work_J,elastic_energy_J\n");
+        for i in 0..h.distance.len() {
+            let _ = writeln!(
+                s,
+                "{i},{},{},{},{},{},{},{},{},{},{},{}",
+                h.distance[i],
+                h.fx[i],
+                h.fy[i],
+                h.mz[i],
+                h.creepage_longitudinal[i],
+                h.creepage_lateral[i],
+                h.shift[i],
+                h.stick_fraction[i],
+                h.dissipated[i],
+                h.work[i],
+                h.elastic_energy[i]
+            );
+        }
+        files.push(("history.csv".to_string(), std::mem::take(&mut s)));
+    } else if let Some(h) = &out.history {
         s.push_str("step,corner,tangential_N,normal_N,moment_N_m,shift_m,rotation_rad,stick_fraction,dissipated_J,work_J,elastic_energy_J,gross_slip\n");
         for i in 0..h.tangential.len() {
             let corner =

@@ -166,7 +166,7 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
         row(s, "rigid tangential displacement", &near(t, ls, "m"));
     }
     if let Some(t) = r.rotation {
-        row(s, "rigid rotation", &format!("{t:.4e} rad"));
+        row(s, "rigid rotation", &eng(t, "rad"));
     }
     let z = &out.zones;
     let spans = |v: &[[f64; 2]]| -> String {
@@ -196,10 +196,26 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
         row(
             s,
             "energy per cycle (computed, closed form)",
-            &format!("{:.4e} J, {:.4e} J", cy.energy_per_cycle[0], cy.energy_per_cycle[1]),
+            &format!("{}, {}", eng(cy.energy_per_cycle[0], "J"), eng(cy.energy_per_cycle[1], "J")),
         );
     }
-    if let Some(h) = &out.history {
+    if let Some(h) = out.history.as_ref().filter(|h| !h.distance.is_empty()) {
+        let n = h.distance.len() - 1;
+        row(
+            s,
+            "transient rolling",
+            &format!(
+                "{} steps, {} rolled; final creepages xi = {}, eta = {} under Fx = {}, Fy = {}",
+                n + 1,
+                eng(h.distance[n], "m"),
+                eng(h.creepage_longitudinal[n], ""),
+                eng(h.creepage_lateral[n], ""),
+                eng(h.fx[n], "N"),
+                eng(h.fy[n], "N")
+            ),
+        );
+        row(s, "energy dissipated while rolling", &eng(h.dissipated[n], "J"));
+    } else if let Some(h) = &out.history {
         row(
             s,
             "load path",
@@ -212,15 +228,18 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
             ),
         );
         if let Some(d) = h.dissipated.last() {
-            row(s, "energy dissipated over the path", &format!("{d:.4e} J"));
+            row(s, "energy dissipated over the path", &eng(*d, "J"));
         }
         for (i, l) in h.loops.iter().enumerate() {
             row(
                 s,
                 &format!("loop {} (steps {} to {})", i + 1, l.first_step, l.last_step),
                 &format!(
-                    "energy {:.4e} J; force range {:.4e} N, shift range {:.4e} m, shift drift {:.3e} m",
-                    l.energy, l.force_range, l.shift_range, l.shift_drift
+                    "energy {}; force range {}, shift range {}, shift drift {}",
+                    eng(l.energy, "J"),
+                    eng(l.force_range, "N"),
+                    eng(l.shift_range, "m"),
+                    stickslip_scene::eng::eng_scaled(l.shift_drift, l.shift_range, "m")
                 ),
             );
         }

@@ -303,6 +303,28 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             }
             expect("loop area = 2 W", area.abs(), 2.0 * w, tol::LOOP_AREA);
         }
+        "transient_rolling_cattaneo.toml" => {
+            // The first step is Mindlin's shift of two identical spheres (Johnson eq. 7.42),
+            // the creep force is held at every step, and the creepage has settled after two
+            // contact lengths (crates/run/tests/transient_rolling.rs compares with the steady
+            // solver).
+            let h = out.history.as_ref().unwrap();
+            let (e, nu, p, f, t) = (210e9, 0.3, 500.0, 0.3, 75.0);
+            let g = e / (2.0 * (1.0 + nu));
+            let delta = 3.0 * f * p * (2.0 - nu) / (8.0 * g * c.a)
+                * (1.0 - (1.0f64 - t / (f * p)).powf(2.0 / 3.0));
+            expect("shift at rest (Mindlin)", h.shift[0].abs(), delta, 0.02);
+            for x in &h.tangential {
+                expect("creep force held", *x, t, 1e-9);
+            }
+            let n = h.creepage_longitudinal.len() - 1;
+            expect(
+                "creepage settled (last two steps)",
+                h.creepage_longitudinal[n],
+                h.creepage_longitudinal[n - 1],
+                1e-3,
+            );
+        }
         "sphere_fretting_history.toml" => {
             // The load path's two loops against Mindlin-Deresiewicz's energy per cycle
             // (FORMULAS.md E), both bodies.

@@ -67,7 +67,7 @@ pub use scene::{
     patch_bounds, Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, History,
     HistoryControl, Indenter, Interface, Load, Method, Motion, NormalLoad, NormalSweep, Outputs,
     Patch, PatchShape, PathSource, Profile, ProfileFile, RailSide, Scene, SceneBuilder,
-    SolverOptions, Source, Substrate, Surface, SurfaceBoundary, WheelRail, WheelsetPosition,
-    DEFAULT_SCENE, MAX_GRID,
+    SolverOptions, Source, Substrate, Surface, SurfaceBoundary, Transient, TransientStart,
+    WheelRail, WheelsetPosition, DEFAULT_SCENE, MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};

@@ -409,6 +409,24 @@ pub(crate) struct RawMotion {
     /// default free rolling, -speed / wheel_radius.
     #[schemars(with = "Option<Qty>")]
     pub pitch_rate: Option<SQty>,
+    /// 3D rolling solved in time steps from a start state (transient rolling): the creep
+    /// force is load.tangential, the creepages follow from it.
+    #[schemars(with = "Option<RawTransient>")]
+    pub transient: Option<Spanned<RawTransient>>,
+}
+
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawTransient {
+    /// "shift" (default): the creep force is first applied at rest, a Cattaneo shift, then
+    /// the contact rolls under it; "rest": the contact rolls from the unloaded state with
+    /// the creep force applied from the first step.
+    #[schemars(with = "Option<String>")]
+    pub start: Option<Spanned<String>>,
+    /// The distance rolled (a length), in steps of one element length; default two contact
+    /// lengths along the rolling direction.
+    #[schemars(with = "Option<Qty>")]
+    pub distance: Option<SQty>,
 }
 
 #[derive(Debug, Deserialize, JsonSchema)]

@@ -477,7 +477,51 @@ pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, 
             }
         }
     }
-    if let Some(h) = &out.history {
+    if let Some(h) = out.history.as_ref().filter(|h| !h.distance.is_empty()) {
+        // Transient rolling: the creepage that carries the creep force, and the stick area,
+        // against the distance rolled.
+        files.push((
+            "history_creepage.svg".to_string(),
+            line_chart(
+                (&format!("{st}: creepages along the distance rolled"), sub),
+                ("distance rolled", "m"),
+                ("creepage", ""),
+                &[
+                    Curve {
+                        dashed: false,
+                        label: "longitudinal",
+                        x: &h.distance,
+                        y: &h.creepage_longitudinal,
+                        colour: blue,
+                    },
+                    Curve {
+                        dashed: true,
+                        label: "lateral",
+                        x: &h.distance,
+                        y: &h.creepage_lateral,
+                        colour: red,
+                    },
+                ],
+                &[],
+            )?,
+        ));
+        files.push((
+            "history_stick.svg".to_string(),
+            line_chart(
+                (&format!("{st}: stick fraction along the distance rolled"), sub),
+                ("distance rolled", "m"),
+                ("stick fraction", ""),
+                &[Curve {
+                    dashed: false,
+                    label: "stick fraction",
+                    x: &h.distance,
+                    y: &h.stick_fraction,
+                    colour: blue,
+                }],
+                &[],
+            )?,
+        ));
+    } else if let Some(h) = &out.history {
         let mut curves = vec![Curve {
             dashed: false,
             label: "load path",

@@ -60,6 +60,13 @@ pub struct TransientStep {
     pub products: usize,
     /// The fast solver's final relative residual (the larger of complementarity and load).
     pub residual: f64,
+    /// Energy dissipated by friction over the contact in this step (J):
+    /// $\sum_I |\mathbf q_I|\,|\mathbf S_I|\,h_xh_y$, the traction times the slip of the step
+    /// (they are parallel where the element slips; zero where it sticks).
+    pub dissipated: f64,
+    /// Elastic energy stored by the tangential traction after the step (J):
+    /// $\tfrac12\sum_I \mathbf q_I\cdot\mathbf u_I\,h_xh_y$ with $\mathbf u = K\mathbf q$.
+    pub elastic_energy: f64,
 }
 
 /// A contact rolling in steps of one element length from a given state.
@@ -241,6 +248,14 @@ impl TransientRolling {
             self.rolled_steps += 1;
         }
         let n = self.n_contact;
+        let area = self.grid.hx * self.grid.hy;
+        // The fast solver's traction is -q and its K(-q) is -u: both products keep their sign.
+        let (mut dissipated, mut stored) = (0.0, 0.0);
+        for k in 0..m {
+            let (t, s, u) = (self.traction[k], self.slip[k], self.kq[k]);
+            dissipated += (t.0 * s.0 + t.1 * s.1) * area;
+            stored += 0.5 * (t.0 * u.0 + t.1 * u.1) * area;
+        }
         let (mut contact, mut stick) = (0usize, 0usize);
         for k in 0..n {
             if self.grid.pressure[k] > 0.0 {
@@ -265,6 +280,8 @@ impl TransientRolling {
             newton_iterations: sol.info.iterations,
             products: sol.info.products + 1,
             residual: sol.info.residual.max(sol.info.load_residual),
+            dissipated,
+            elastic_energy: stored,
         }
     }
 

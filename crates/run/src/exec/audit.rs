@@ -7,7 +7,7 @@
 //! |---|---|---|
 //! | finite | every number finite | none non-finite |
 //! | positive sizes | contact length (2D: a + b), semi-axis b, peak pressure, normal load | > 0 |
-//! | coulomb | $\max_k (\lvert\mathbf q_k\rvert - f p_k)/(f p_0)$ over the written points | grid solvers $\max(10^{-9}, \mathrm{tol})$; rolling $\max(10^{-9}, 100\,\mathrm{tol})$; closed forms $10^{-12}$ |
+//! | coulomb | $\max_k (\lvert\mathbf q_k\rvert - f p_k)/(f p_0)$ over the written points | grid solvers (and exact or transient 3D rolling) $\max(10^{-9}, \mathrm{tol})$; rolling $\max(10^{-9}, 100\,\mathrm{tol})$; closed forms $10^{-12}$ |
 //! | stick inside contact | stick cells without pressure; stick intervals outside the contact | none |
 //! | normal resultant | $\lvert h_xh_y\sum p_k - P\rvert / P$ on a 3D lattice | [`LATTICE_AREA_TOLERANCE`] |
 //! | tangential resultant | $\lvert h_xh_y\sum \mathbf q_k - \mathbf T\rvert / (fP)$ | as coulomb, plus the normal resultant's |
@@ -66,7 +66,9 @@ fn limits(plan: &Plan) -> (f64, Option<f64>) {
         Recipe::Contact(ContactRecipe {
             tangential:
                 Some(Tangential::Rolling(RollingStep {
-                    method: RollingMethod::Exact, tolerance, ..
+                    method: RollingMethod::Exact | RollingMethod::Transient,
+                    tolerance,
+                    ..
                 })),
             ..
         }) => (tolerance.max(1e-9), Some(*tolerance)),

@@ -455,6 +455,12 @@ pub(crate) fn run(
             .map(|s| s.regime == stickslip_traction::Regime::GrossSlip)
             .collect(),
         loops,
+        distance: Vec::new(),
+        fx: Vec::new(),
+        fy: Vec::new(),
+        mz: Vec::new(),
+        creepage_longitudinal: Vec::new(),
+        creepage_lateral: Vec::new(),
     };
     let t = TangentialOut {
         creep: None,

@@ -8,7 +8,7 @@
 //! | [`Recipe::Line`] | `normal` (2D) → `friction` (2D traction) → `surface` → `field` |
 //! | [`Recipe::Rolling`] | `rolling` (normal and tangential together) |
 //! | [`Recipe::WheelRail`] | `wheel_rail` (contact search, normal contact under the wheel load, creep forces per patch: `stickslip-wheelrail`) |
-//! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) or `roll3d` (3D steady rolling: exact, FASTSIM, Polach) or `history` (a load path, step by step; its final state goes on) → `cycle` → `field` |
+//! | [`Recipe::Contact`] | `normal` (3D, on the `lattice`) → `friction` (closed forms) or `twist` (Lubkin) or `grid` (LP, fast solver) or `roll3d` (3D steady rolling: exact, FASTSIM, Polach) or `transient` (3D rolling in steps from a start state, its steps into `history`) or `history` (a load path, step by step; its final state goes on) → `cycle` → `field` |
 //!
 //! Every stage increments the evaluation counter of the effects it computes
 //! ([`Evaluations`]), so a test can prove that an effect that is off costs nothing. Adding a
@@ -27,6 +27,7 @@ mod history;
 mod lattice;
 mod normal;
 pub(crate) mod outcome;
+mod transient;
 
 pub use crate::plan::patches::LATTICE_AREA_TOLERANCE;
 pub use audit::SAMPLING_TOLERANCE;
@@ -324,7 +325,15 @@ fn contact(r: &crate::plan::recipe::ContactRecipe, cx: &mut Ctx<'_>) -> Result<P
         Some(Tangential::Grid(g)) => {
             grid::solve(&mut lat, r, &n, g.method, g.force, g.direction, g.moment, g.tolerance, cx)?
         }
-        Some(Tangential::Rolling(step)) => roll3d::solve(&mut lat, r, &n, &step, cx)?,
+        Some(Tangential::Rolling(step)) => match step.transient {
+            Some(tr) => {
+                let (t, hist) = transient::solve(&mut lat, r, &n, &step, &tr, cx)?;
+                let mut parts = contact_parts(r, n, lat, t, cx)?;
+                parts.history = Some(hist);
+                return Ok(parts);
+            }
+            None => roll3d::solve(&mut lat, r, &n, &step, cx)?,
+        },
     };
     contact_parts(r, n, lat, t, cx)
 }

@@ -683,10 +683,12 @@ pub struct CycleOut {
 }
 
 /// `history` in result.json: a load path solved step by step (`[load.history]`;
-/// docs/load-histories.md), one value per step in each column.
+/// docs/load-histories.md), or transient rolling (`[motion.transient]`, `control` =
+/// "rolling"), one value per step in each column.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HistoryOut {
-    /// "force" or "shift": what the path prescribes along `direction_deg`.
+    /// "force" or "shift": what the path prescribes along `direction_deg`; "rolling" for
+    /// transient rolling (the creep force is prescribed, the contact rolls).
     pub control: &'static str,
     /// Direction of the tangential load (degrees from +x).
     pub direction_deg: f64,
@@ -714,6 +716,25 @@ pub struct HistoryOut {
     pub gross_slip: Vec<bool>,
     /// The closed cycles, with their energy.
     pub loops: Vec<HistoryLoopOut>,
+    /// Transient rolling only: the distance rolled at each step (m; 0 for the step at rest).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub distance: Vec<f64>,
+    /// Transient rolling only: the creep force on the indenter along x (N).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub fx: Vec<f64>,
+    /// Transient rolling only: the creep force on the indenter along y (N).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub fy: Vec<f64>,
+    /// Transient rolling only: the spin moment about the contact centre (N m).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mz: Vec<f64>,
+    /// Transient rolling only: the longitudinal creepage that carries the force in the step
+    /// (0 for the step at rest of a shift start, which does not roll: its distance is 0).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub creepage_longitudinal: Vec<f64>,
+    /// Transient rolling only: the lateral creepage (0 for the step at rest).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub creepage_lateral: Vec<f64>,
 }
 
 /// One closed cycle of a load path.

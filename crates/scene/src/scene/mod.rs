@@ -554,6 +554,9 @@ pub enum Motion {
         lateral: f64,
         /// Spin creepage phi (1/m).
         spin: f64,
+        /// Rolled in time steps from a start state (`[motion.transient]`); the longitudinal
+        /// and lateral creepages are then 0 here and follow from the creep force.
+        transient: Option<Transient>,
     },
     /// A wheelset rolling along the track (`geometry.kind = "wheel-rail"`): the creepages of
     /// each patch follow from the speed, the pitch rate, the position and the patch.
@@ -564,6 +567,26 @@ pub enum Motion {
         /// radius, -V / r0.
         pitch_rate: Option<f64>,
     },
+}
+
+/// Transient 3D rolling (`[motion.transient]`): the contact rolls in steps of one element
+/// length under the creep force `load.tangential` (along `load.direction`, on the indenter)
+/// and the spin creepage, from `start`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Transient {
+    /// The state the rolling starts from.
+    pub start: TransientStart,
+    /// Distance rolled (m); None: two contact lengths along x.
+    pub distance: Option<f64>,
+}
+
+/// Where transient rolling starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TransientStart {
+    /// The creep force is applied at rest first (a Cattaneo shift), then the contact rolls.
+    Shift,
+    /// The contact rolls from the unloaded state; the creep force acts from the first step.
+    Rest,
 }
 
 /// A subsurface grid, in units of `scale`: in 2D x and depth y; in 3D a box of x, y and

@@ -17,7 +17,7 @@ use toml::Spanned;
 
 use super::{
     Cycle, Ellipse, FieldGrid, FieldScale, Geometry, Indenter, Load, Method, Motion, NormalLoad,
-    Outputs, Patch, PatchShape, Scene, SolverOptions, Source, Substrate,
+    Outputs, Patch, PatchShape, Scene, SolverOptions, Source, Substrate, Transient, TransientStart,
 };
 use crate::error::{ErrorKind, SceneError};
 use crate::raw::{Qty, RawNormal, RawScene, SQty};
@@ -610,7 +610,8 @@ fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Motion, SceneE
         .as_ref()
         .map(|q| ("speed", q.span()))
         .or(mr.creep.as_ref().map(|c| ("creep", c.span())))
-        .or(mr.creepage.as_ref().map(|c| ("creepage", c.span())));
+        .or(mr.creepage.as_ref().map(|c| ("creepage", c.span())))
+        .or(mr.transient.as_ref().map(|c| ("transient", c.span())));
     let kind = match &mr.kind {
         Some(k) => cx.choice(k, "motion.kind", &["static", "rolling"])?,
         // A speed or a creep says the bodies roll; nothing else can be meant.
@@ -647,6 +648,11 @@ fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Motion, SceneE
                         .err(ErrorKind::Unsupported, "motion.creepage", Some(c), "creepages given directly are not taken for a wheel on a rail")
                         .hint("the creepages of each patch follow from motion.speed, motion.pitch_rate and [position]: remove motion.creepage (or motion.creep)"));
                 }
+                if let Some(t) = &mr.transient {
+                    return Err(cx
+                        .err(ErrorKind::Unsupported, "motion.transient", Some(t.span()), "transient rolling of a wheel on a rail is not solved in this version")
+                        .hint("remove [motion.transient]; transient rolling is solved for a sphere, an ellipsoid or a surface"));
+                }
                 let pitch_rate = match &mr.pitch_rate {
                     None => None,
                     Some(p) => {
@@ -654,6 +660,43 @@ fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Motion, SceneE
                     }
                 };
                 return Ok(Motion::Wheelset { speed, pitch_rate });
+            }
+            let transient = match &mr.transient {
+                None => None,
+                Some(t) => {
+                    cx.record("motion.transient", t.span());
+                    let tr = t.get_ref();
+                    let start = match &tr.start {
+                        None => TransientStart::Shift,
+                        Some(s) => {
+                            match cx.choice(s, "motion.transient.start", &["shift", "rest"])? {
+                                "rest" => TransientStart::Rest,
+                                _ => TransientStart::Shift,
+                            }
+                        }
+                    };
+                    let distance = match &tr.distance {
+                        None => None,
+                        Some(d) => {
+                            Some(cx.qty(d, "motion.transient.distance", Dim::LENGTH, "length")?)
+                        }
+                    };
+                    if let Some(c) = &mr.creep {
+                        return Err(cx
+                            .err(ErrorKind::Schema, "motion.creep", Some(c.span()), "`creep` is given with [motion.transient]")
+                            .hint("transient rolling is 3D: its creep force is load.tangential, its spin motion.creepage.spin; remove `creep`"));
+                    }
+                    Some(Transient { start, distance })
+                }
+            };
+            if transient.is_some() && mr.creepage.is_none() {
+                return Ok(Motion::RollingCreepage {
+                    speed,
+                    longitudinal: 0.0,
+                    lateral: 0.0,
+                    spin: 0.0,
+                    transient,
+                });
             }
             if let Some(cr) = &mr.creepage {
                 if let Some(c) = &mr.creep {
@@ -692,7 +735,22 @@ fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Motion, SceneE
                         cx.qty(s, "motion.creepage.spin", Dim::PER_LENGTH, "reciprocal length")?
                     }
                 };
-                return Ok(Motion::RollingCreepage { speed, longitudinal, lateral, spin });
+                if transient.is_some() {
+                    for (key, v) in [("longitudinal", &c.longitudinal), ("lateral", &c.lateral)] {
+                        if let Some(v) = v {
+                            return Err(cx
+                                .err(ErrorKind::Schema, &format!("motion.creepage.{key}"), Some(v.span()), format!("a {key} creepage is given with [motion.transient]"))
+                                .hint("in transient rolling the creepages follow from the creep force load.tangential (with load.direction); only the spin is prescribed: remove it"));
+                        }
+                    }
+                }
+                return Ok(Motion::RollingCreepage {
+                    speed,
+                    longitudinal,
+                    lateral,
+                    spin,
+                    transient,
+                });
             }
             let creep = mr.creep.as_ref().map_or(0.0, |c| cx.num(c, "motion.creep"));
             Motion::Rolling { speed, creep }

@@ -720,8 +720,30 @@ fn motion(scene: &Scene) -> Result<(), Issue> {
         return Err(Issue::new(ErrorKind::Schema, "motion.kind", "a wheel on a rail takes motion.kind = \"rolling\" with speed and pitch_rate")
             .hint("[motion] kind = \"rolling\", speed = \"2 m/s\", pitch_rate = \"-4.35 rad/s\" (or leave [motion] out for normal contact only)"));
     }
-    if let Motion::RollingCreepage { speed, longitudinal, lateral, spin } = scene.motion {
+    if let Motion::RollingCreepage { speed, longitudinal, lateral, spin, transient } = scene.motion
+    {
         within("motion.speed", speed, &ranges::SPEED)?;
+        if let Some(t) = transient {
+            if let Some(d) = t.distance {
+                within("motion.transient.distance", d, &ranges::LENGTH)?;
+            }
+            if longitudinal != 0.0 || lateral != 0.0 {
+                return Err(Issue::new(ErrorKind::Schema, "motion.creepage", "longitudinal or lateral creepage given with [motion.transient]")
+                    .hint("in transient rolling the creepages follow from the creep force load.tangential; only the spin is prescribed"));
+            }
+            if scene.load.history.is_some() || scene.load.sliding || scene.load.moment != 0.0 {
+                return Err(Issue::new(ErrorKind::Unsupported, "motion.transient", "transient rolling takes a constant creep force (load.tangential, load.direction) and the spin; a load path, sliding or a moment are not solved with it in this version")
+                    .hint("remove [load.history], load.sliding and load.moment"));
+            }
+            if scene.load.friction <= 0.0 {
+                return Err(Issue::new(
+                    ErrorKind::Impossible,
+                    "load.friction",
+                    "transient rolling needs friction: without it no creep force is carried",
+                )
+                .hint("give load.friction, e.g. friction = 0.3"));
+            }
+        }
         for (key, v) in [
             ("motion.creepage.longitudinal", longitudinal),
             ("motion.creepage.lateral", lateral),

@@ -215,7 +215,12 @@ static MOTION: Table = Table {
         f("creep", Kind::Num),
         f("creepage", Kind::Table(&CREEPAGE)),
         f("pitch_rate", Kind::Qty("\"-4.35 rad/s\"")),
+        f("transient", Kind::Table(&TRANSIENT)),
     ],
+};
+
+static TRANSIENT: Table = Table {
+    fields: &[f("start", Kind::Str(&["shift", "rest"])), f("distance", Kind::Qty("\"1.6 mm\""))],
 };
 
 static CREEPAGE: Table = Table {
