@@ -118,6 +118,7 @@ pub(crate) fn render(
             slip_y,
             dissipation,
             slip_amplitude,
+            ruiz,
             plastic,
             plastic_displacement,
         } if !x.is_empty() => {
@@ -136,6 +137,7 @@ pub(crate) fn render(
                     ("slip_y", slip_y),
                     ("dissipation", dissipation),
                     ("slip_amplitude", slip_amplitude),
+                    ("ruiz", ruiz),
                     ("plastic", plastic),
                     ("plastic_displacement", plastic_displacement),
                 ] {

@@ -310,3 +310,50 @@ steps = 6
     );
     assert!(worst <= 2e-4, "{worst:e}");
 }
+
+/// The Ruiz parameter of a fretting cycle (Ruiz, Boddington & Chen 1984): zero in the stick
+/// core (no slip there), largest in the slip annulus c <= r <= a of Mindlin's solution,
+/// c = a (1 - T*/(fP))^(1/3), on the load axis, symmetric between the two edges that the
+/// two turning points put in tension; the surface stress it uses is checked against
+/// Johnson's closed form in exec/ruiz.rs.
+#[test]
+fn the_ruiz_parameter_lives_in_the_slip_annulus() {
+    let (_, out) = solve(&sphere(
+        "tangential = [\"0 lbf\", \"108 lbf\", \"-108 lbf\", \"108 lbf\"]\nsteps = 10",
+    ));
+    let h = out.history.as_ref().unwrap();
+    let best = h.ruiz_max.expect("a free-surface path has a Ruiz parameter");
+    let SurfaceOut::Grid { x, y, ruiz: Some(f2), slip_amplitude: Some(d), .. } = &out.surface
+    else {
+        panic!("a lattice with the Ruiz map")
+    };
+    let a = out.contact.a;
+    let c = a * (1.0f64 - 0.5).powf(1.0 / 3.0);
+    let hx = x[1] - x[0];
+    let r = best.x.hypot(best.y);
+    println!(
+        "Ruiz max {:.4e} Pa J/m^2 at ({:.4e}, {:.4e}) m; c = {c:.4e}, a = {a:.4e}",
+        best.value, best.x, best.y
+    );
+    assert!(best.value > 0.0);
+    assert!(r >= c - 1.5 * hx && r <= a + 0.5 * hx, "the maximum at r = {r} is outside [c, a]");
+    assert!(best.y.abs() <= 0.3 * a, "the maximum lies near the load axis: y = {}", best.y);
+    let (mut left, mut right) = (0.0f64, 0.0f64);
+    for i in 0..x.len() {
+        for j in 0..y.len() {
+            let rr = x[i].hypot(y[j]);
+            if d[i][j] == 0.0 {
+                assert_eq!(f2[i][j], 0.0, "no slip, no Ruiz parameter");
+            }
+            if rr < c - 1.5 * hx {
+                assert!(f2[i][j] <= 1e-6 * best.value, "stick core at r = {rr}: {}", f2[i][j]);
+            }
+            if x[i] < 0.0 {
+                left = left.max(f2[i][j])
+            } else {
+                right = right.max(f2[i][j])
+            }
+        }
+    }
+    assert!((left - right).abs() <= 0.05 * best.value, "edges {left} and {right}");
+}

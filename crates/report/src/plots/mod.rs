@@ -434,7 +434,13 @@ pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, 
         }
     }
     if let SurfaceOut::Grid {
-        x, y, stick, dissipation: Some(d), slip_amplitude: Some(sa), ..
+        x,
+        y,
+        stick,
+        dissipation: Some(d),
+        slip_amplitude: Some(sa),
+        ruiz,
+        ..
     } = &out.surface
     {
         if !x.is_empty() && !y.is_empty() {
@@ -457,7 +463,17 @@ pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, 
                     "m",
                     sa,
                 ),
-            ] {
+            ]
+            .into_iter()
+            .chain(ruiz.as_ref().map(|r| {
+                (
+                    "ruiz.svg",
+                    "Ruiz parameter, largest tension times shear at the turning points times slip range",
+                    "F2",
+                    "Pa J/m^2",
+                    r,
+                )
+            })) {
                 let v = tr(m);
                 files.push((
                     file.to_string(),

@@ -23,7 +23,7 @@ use stickslip_traction::{ElementState, Error as TractionError, FastConfig, LoadK
 use super::friction::TangentialOut;
 use super::lattice::Lattice;
 use super::normal::{surface_err, surface_gap, surface_solution, ContactSolution};
-use super::outcome::{GridZones, HistoryLoopOut, HistoryOut, RigidOut, Zones};
+use super::outcome::{GridZones, HistoryLoopOut, HistoryOut, RigidOut, RuizMaxOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, HistoryRecipe};
 use stickslip_scene::eng::eng;
@@ -252,13 +252,32 @@ pub(crate) fn run(
     }
     let total = path.points().len();
     cx.progress("load path", 0, total);
-    let out =
-        problem.run(&path, |p| st.pressure.at(&st.grid, p).map_err(Fail::Scene)).map_err(|e| {
-            match e {
-                Fail::Scene(e) => e,
-                Fail::Traction(e) => history_err(h, e),
-            }
+    // The Ruiz parameter needs the surface stress at the turning points (free boundary
+    // only, exec/ruiz.rs).
+    let mut ruiz = match super::grid::periodic_lattice(r) {
+        None if r.friction > 0.0 => Some(super::ruiz::RuizTracker::new(
+            &st.grid,
+            r.bodies.substrate.poisson_ratio(),
+            h.direction,
+        )?),
+        _ => None,
+    };
+    let out = problem
+        .run_observed(
+            &path,
+            |p| st.pressure.at(&st.grid, p).map_err(Fail::Scene),
+            |_, corner, state| match (ruiz.as_mut(), corner) {
+                (Some(t), Some(_)) => {
+                    t.corner(state.pressure(), state.traction()).map_err(Fail::Scene)
+                }
+                _ => Ok(()),
+            },
+        )
+        .map_err(|e| match e {
+            Fail::Scene(e) => e,
+            Fail::Traction(e) => history_err(h, e),
         })?;
+    let ruiz_values = ruiz.as_ref().map(|t| t.parameter(&out.slip_range));
     cx.progress("load path", total, total);
     let steps = &out.steps;
     let last = *steps.last().ok_or_else(|| solver_err("load path", "no step"))?;
@@ -296,6 +315,20 @@ pub(crate) fn run(
     }
     lat.dissipation = Some(dissipation);
     lat.slip_range = Some(slip_range);
+    let mut ruiz_max = None;
+    if let Some(v) = &ruiz_values {
+        let mut map = vec![vec![0.0; ny]; nx];
+        let mut best = RuizMaxOut { value: 0.0, x: 0.0, y: 0.0 };
+        for (k, &f2) in v.iter().enumerate() {
+            let Some((i, j)) = lat.index(st.grid.x[k], st.grid.y[k]) else { continue };
+            map[i][j] = f2;
+            if f2 > best.value {
+                best = RuizMaxOut { value: f2, x: st.grid.x[k], y: st.grid.y[k] };
+            }
+        }
+        lat.ruiz = Some(map);
+        ruiz_max = Some(best);
+    }
 
     // The final contact: Hertz's at the final load, or the surface's last normal solve.
     let pfinal = last.normal;
@@ -455,6 +488,7 @@ pub(crate) fn run(
             .map(|s| s.regime == stickslip_traction::Regime::GrossSlip)
             .collect(),
         loops,
+        ruiz_max,
         distance: Vec::new(),
         fx: Vec::new(),
         fy: Vec::new(),

@@ -19,6 +19,8 @@ pub(crate) struct Lattice {
     pub dissipation: Option<Vec<Vec<f64>>>,
     /// A load path: slip range per cell (m).
     pub slip_range: Option<Vec<Vec<f64>>>,
+    /// A load path on a free surface: the Ruiz parameter per cell (Pa·J/m²).
+    pub ruiz: Option<Vec<Vec<f64>>>,
 }
 
 impl Lattice {
@@ -34,6 +36,7 @@ impl Lattice {
             slip: None,
             dissipation: None,
             slip_range: None,
+            ruiz: None,
         }
     }
 
@@ -70,6 +73,7 @@ impl Lattice {
             gap,
             dissipation: self.dissipation,
             slip_amplitude: self.slip_range,
+            ruiz: self.ruiz,
             plastic: None,
             plastic_displacement: None,
         }

@@ -27,6 +27,7 @@ mod history;
 mod lattice;
 mod normal;
 pub(crate) mod outcome;
+mod ruiz;
 mod transient;
 
 pub use crate::plan::patches::LATTICE_AREA_TOLERANCE;

@@ -235,6 +235,11 @@ pub enum SurfaceOut {
         /// peak; docs/load-histories.md); absent otherwise.
         #[serde(skip_serializing_if = "Option::is_none")]
         slip_amplitude: Option<Vec<Vec<f64>>>,
+        /// A load path on a free surface: the Ruiz parameter of each cell, the largest
+        /// tangential surface stress times shear over the path's corners times the slip
+        /// range (Pa·J/m² = Pa²·m; docs/load-histories.md); absent otherwise.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        ruiz: Option<Vec<Vec<f64>>>,
         /// A surface under a hardness: 1 where the pressure is at the hardness (plastic),
         /// else 0; absent otherwise.
         #[serde(skip_serializing_if = "Option::is_none")]
@@ -716,6 +721,9 @@ pub struct HistoryOut {
     pub gross_slip: Vec<bool>,
     /// The closed cycles, with their energy.
     pub loops: Vec<HistoryLoopOut>,
+    /// A load path on a free surface: the largest Ruiz parameter (Pa·J/m²) and where (m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ruiz_max: Option<RuizMaxOut>,
     /// Transient rolling only: the distance rolled at each step (m; 0 for the step at rest).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub distance: Vec<f64>,
@@ -735,6 +743,17 @@ pub struct HistoryOut {
     /// Transient rolling only: the lateral creepage (0 for the step at rest).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub creepage_lateral: Vec<f64>,
+}
+
+/// The largest Ruiz parameter of a load path and its cell.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RuizMaxOut {
+    /// $\max F_2$ (Pa·J/m²).
+    pub value: f64,
+    /// Cell centre x (m).
+    pub x: f64,
+    /// Cell centre y (m).
+    pub y: f64,
 }
 
 /// One closed cycle of a load path.

@@ -98,6 +98,7 @@ pub(crate) fn solve(
         elastic_energy: Vec::with_capacity(total),
         gross_slip: Vec::with_capacity(total),
         loops: Vec::new(),
+        ruiz_max: None,
         distance: Vec::with_capacity(total),
         fx: Vec::with_capacity(total),
         fy: Vec::with_capacity(total),

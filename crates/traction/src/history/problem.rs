@@ -2,6 +2,7 @@
 //! and the whole-path driver [`HistoryProblem::run`].
 
 use super::path::{HistoryLoop, LoadPath, PathControl};
+use super::stepper::LoadHistory;
 use crate::contract::check_pair;
 use crate::error::{Error, Result};
 use crate::fast::FastConfig;
@@ -246,14 +247,32 @@ impl HistoryProblem<'_> {
     /// [`Error::OutOfDomain`] for a moment on a shift-controlled path or with
     /// [`HistoryDirections::Line`]. During the path: [`Error::HistoryStep`] with the step
     /// index and the step's error.
-    pub fn run<E, F>(
+    pub fn run<E, F>(&self, path: &LoadPath, pressure: F) -> std::result::Result<HistoryOutcome, E>
+    where
+        E: From<Error>,
+        F: FnMut(f64) -> std::result::Result<Vec<f64>, E>,
+    {
+        self.run_observed(path, pressure, |_, _, _| Ok(()))
+    }
+
+    /// [`HistoryProblem::run`], calling `observe(step, corner, state)` after every step with
+    /// the step's index, the corner's index when the step is a corner of the path, and the
+    /// state (its traction, pressure, slip) as the step left it: for what a caller computes
+    /// from intermediate states (e.g. surface stresses at the turning points) without storing
+    /// every step's arrays.
+    ///
+    /// # Errors
+    /// As [`HistoryProblem::run`], and `observe`'s errors unchanged.
+    pub fn run_observed<E, F, O>(
         &self,
         path: &LoadPath,
         mut pressure: F,
+        mut observe: O,
     ) -> std::result::Result<HistoryOutcome, E>
     where
         E: From<Error>,
         F: FnMut(f64) -> std::result::Result<Vec<f64>, E>,
+        O: FnMut(usize, Option<usize>, &LoadHistory<'_>) -> std::result::Result<(), E>,
     {
         if path.has_moment() {
             self.check_moment_allowed(path.control(), path.corner(0).map_or(0.0, |c| c.2))?;
@@ -325,6 +344,7 @@ impl HistoryProblem<'_> {
                 moment: pt.moment,
             };
             h.step(pr, target).map_err(|e| Error::HistoryStep { step: i, source: Box::new(e) })?;
+            observe(i, pt.corner, &h)?;
         }
         Ok(h.into_outcome())
     }
