@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 use stickslip_report::{write_outputs_report, ReportContext, WriteOptions};
 use stickslip_run::{Execute, MachineLimits, Plan, RunOptions};
 use stickslip_scene::{Scene, SceneError};
-use stickslip_sweep::{Cell, Kind, Shard, Sweep, Vary};
+use stickslip_sweep::{Cell, Kind, Mode, Shard, Sweep, Vary};
 
 create_exception!(
     _stickslip,
@@ -141,16 +141,19 @@ fn cell(py: Python<'_>, c: &Cell) -> PyResult<Py<PyAny>> {
 
 #[pymethods]
 impl PySweep {
-    /// A sweep of the scene `text` over `specs` (`key=start:end:count` or `key=v1,v2,...`).
+    /// A sweep of the scene `text` over `specs` (`key=start:end:count` or `key=v1,v2,...`):
+    /// their cartesian product, or with `zip` the lists taken in step (`stickslip sweep
+    /// --zip`).
     #[new]
-    #[pyo3(signature = (text, specs, file=None))]
-    fn new(text: &str, specs: Vec<String>, file: Option<PathBuf>) -> PyResult<Self> {
+    #[pyo3(signature = (text, specs, file=None, zip=false))]
+    fn new(text: &str, specs: Vec<String>, file: Option<PathBuf>, zip: bool) -> PyResult<Self> {
         let vary = specs
             .iter()
             .map(|s| Vary::parse(s))
             .collect::<Result<Vec<_>, _>>()
             .map_err(|e| pyo3::exceptions::PyValueError::new_err(e.to_string()))?;
-        Ok(PySweep(Sweep::new(text, file, &vary).map_err(raise)?))
+        let mode = if zip { Mode::Zip } else { Mode::Cartesian };
+        Ok(PySweep(Sweep::with_mode(text, file, &vary, mode).map_err(raise)?))
     }
 
     /// The number of points.

@@ -227,9 +227,9 @@ def _value(x):
     return s
 
 
-def _point(text, file, specs, i, time_limit):
+def _point(text, file, specs, i, time_limit, zip=False):
     """One point's row (run on a Dask worker): the sweep is rebuilt from its text there."""
-    return _call(_stickslip.Sweep, text, specs, file).run_point(i, time_limit)
+    return _call(_stickslip.Sweep, text, specs, file, zip).run_point(i, time_limit)
 
 
 def _frame(columns, rows):
@@ -252,25 +252,27 @@ def _frame(columns, rows):
     return pd.DataFrame(data, columns=[c for c, _ in columns])
 
 
-def sweep(scene, vary, client=None, shard=None, time_limit=600.0):
+def sweep(scene, vary, client=None, shard=None, time_limit=600.0, zip=False):
     """A parameter sweep: the table of ``stickslip sweep`` as a pandas DataFrame.
 
     ``vary``: {key: "start:end:count"} or {key: [values]} or a list of "key=values"
     strings, as ``--vary`` takes them; the points are the cartesian product in the same
-    order (the last key fastest). ``client``: a ``dask.distributed.Client``; the points
+    order (the last key fastest), or with ``zip=True`` (``--zip``) the lists taken in step,
+    point ``i`` setting every key to its ``i``-th value (lists of equal length; a pandas
+    DataFrame of points gives them as ``{k: list(df[k]) for k in df}``). ``client``: a ``dask.distributed.Client``; the points
     run on its workers (``client.map``), else here one after the other. ``shard``: (i, n)
     for the points of shard i of n only. Each point is an independent, audited run; a point
     that fails is a row with ``status`` "failed" and its ``reason``.
     """
     text, file = _scene(scene)
     specs = _specs(vary)
-    s = _call(_stickslip.Sweep, text, specs, file)  # ValueError for a bad specification
+    s = _call(_stickslip.Sweep, text, specs, file, zip)  # ValueError for a bad specification
     i, n = shard if shard is not None else (1, 1)
     points = s.points(i, n)
     if client is None:
         rows = [s.run_point(p, time_limit) for p in points]
     else:
-        rows = _on_cluster(client, text, file, specs, points, time_limit)
+        rows = _on_cluster(client, text, file, specs, points, time_limit, zip)
     return _frame(s.columns(), rows)
 
 
@@ -278,7 +280,7 @@ def sweep(scene, vary, client=None, shard=None, time_limit=600.0):
 WORKER_RETRIES = 3
 
 
-def _on_cluster(client, text, file, specs, points, time_limit):
+def _on_cluster(client, text, file, specs, points, time_limit, zip=False):
     """The rows of ``points`` run on the cluster of ``client``, in the order of ``points``.
 
     Each point is one task; its row is kept in the slot of its point as it arrives, so a
@@ -296,7 +298,7 @@ def _on_cluster(client, text, file, specs, points, time_limit):
     owner = {}
 
     def submit(j, attempt):
-        f = client.submit(_point, text, file, specs, points[j], time_limit, pure=False,
+        f = client.submit(_point, text, file, specs, points[j], time_limit, zip, pure=False,
                           retries=0)
         owner[f.key] = (j, attempt)
         return f

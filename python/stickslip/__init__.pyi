@@ -94,6 +94,8 @@ def sweep(
     client: Optional[Any] = ...,
     shard: Optional[Tuple[int, int]] = ...,
     time_limit: float = ...,
+    zip: bool = ...,
 ) -> pandas.DataFrame:
     """A parameter sweep: the table of ``stickslip sweep`` as a pandas DataFrame, run here
-    or on the Dask cluster of ``client`` (a ``dask.distributed.Client``)."""
+    or on the Dask cluster of ``client`` (a ``dask.distributed.Client``); ``zip=True`` takes
+    the lists in step (``stickslip sweep --zip``)."""

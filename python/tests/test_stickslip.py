@@ -180,6 +180,22 @@ def test_the_frame_equals_the_cli_table(cli, tmp_path):
     np.testing.assert_array_equal(csv.tangential.to_numpy(), table.tangential.to_numpy())
 
 
+def test_a_zipped_sweep_equals_the_cli_zip_table(cli, tmp_path):
+    zipped = {"load.tangential": ["0 kN/m", "10 kN/m", "20 kN/m"], "load.friction": [0.2, 0.3, 0.4]}
+    subprocess.run([cli, "sweep", str(HERTZ), "--zip", "--vary",
+                    "load.tangential=0 kN/m,10 kN/m,20 kN/m", "--vary", "load.friction=0.2,0.3,0.4",
+                    "--out", str(tmp_path)], check=True, capture_output=True)
+    table = pd.read_parquet(tmp_path / "sweep.parquet")
+    df = stickslip.sweep(HERTZ, zipped, zip=True)
+    assert len(df) == 3
+    assert list(df["load.friction"]) == [0.2, 0.3, 0.4]
+    pd.testing.assert_frame_equal(df, table, check_exact=True)
+    with pytest.raises(stickslip.SceneError) as e:
+        stickslip.sweep(HERTZ, {"load.tangential": ["0 kN/m"], "load.friction": [0.2, 0.3]},
+                        zip=True)
+    assert e.value.key == "load.friction"
+
+
 def test_bad_vary_specs_are_value_errors():
     with pytest.raises(ValueError, match="three parts"):
         stickslip.sweep(HERTZ, {"load.friction": "0:1"})

@@ -8,8 +8,9 @@
 //!   `--json`.
 //! - `stickslip explain [SCENE]`: print the plan (effects on and off with reasons, the
 //!   technique per effect, the estimated cost) without computing anything.
-//! - `stickslip sweep SCENE --vary KEY=VALUES... --out DIR [--shard I/N]`: a parameter
-//!   sweep, every point an independent audited run, into one table (sweep.csv and
+//! - `stickslip sweep SCENE --vary KEY=VALUES... [--zip] [--points FILE] --out DIR
+//!   [--shard I/N]`: a parameter sweep (the cartesian product, or with `--zip` or a points
+//!   table the keys in step), every point an independent audited run, into one table (sweep.csv and
 //!   sweep.parquet; failed points are rows with their reason); `stickslip merge SHARDS...
 //!   --out DIR` merges shard tables, checking that none is missing (`sweep.rs`).
 //! - `stickslip reproduce [--out DIR]`: the verification pages (stickslip-verification).
@@ -121,11 +122,12 @@ enum Command {
         /// Scene file (TOML); omit for the built-in default scene.
         scene: Option<PathBuf>,
     },
-    /// Run a parameter sweep: the cartesian product of the --vary values, each point an
-    /// independent, audited run, gathered into one table (CSV and Parquet). A failed point
-    /// is a row with its reason; the status is 0 once the table is written.
+    /// Run a parameter sweep: the cartesian product of the --vary values (with --zip or
+    /// --points: the values taken in step, point by point), each point an independent,
+    /// audited run, gathered into one table (CSV and Parquet). A failed point is a row with
+    /// its reason; the status is 0 once the table is written.
     #[command(
-        after_help = "Example:\n  stickslip sweep scenes/hertz_cylinder_cattaneo.toml --vary load.friction=0.2,0.3,0.4 \\\n      --vary load.tangential=\"0 kN/m:20 kN/m:5\" --out results/sweep"
+        after_help = "Example:\n  stickslip sweep scenes/hertz_cylinder_cattaneo.toml --vary load.friction=0.2,0.3,0.4 \\\n      --vary load.tangential=\"0 kN/m:20 kN/m:5\" --out results/sweep\n  stickslip sweep scenes/wheel_rail_manchester_a22.toml \\\n      --points scenes/wheel_rail_manchester_a22_left.csv --out results/a22"
     )]
     Sweep(sweep::SweepArgs),
     /// Merge the tables of a sweep's shards, checking that every point is there once.

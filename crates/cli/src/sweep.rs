@@ -7,7 +7,9 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use stickslip_sweep::{journal_path, merge, write_atomically, Cell, Shard, Sweep, Table, Vary};
+use stickslip_sweep::{
+    journal_path, merge, read_points, write_atomically, Cell, Mode, Shard, Sweep, Table, Vary,
+};
 
 use crate::{emit, note, Failure};
 
@@ -19,9 +21,21 @@ pub struct SweepArgs {
     /// A varied key: KEY=START:END:COUNT (COUNT evenly spaced values, ends included, e.g.
     /// load.tangential=0:0.9:10 or load.normal="10 N:50 N:5") or KEY=V1,V2,... (e.g.
     /// load.friction=0.1,0.2). Repeat for more keys; the points are the cartesian product,
-    /// the last key varying fastest.
-    #[arg(long, value_name = "KEY=VALUES", required = true, value_parser = vary)]
+    /// the last key varying fastest (with --zip: the lists taken in step).
+    #[arg(long, value_name = "KEY=VALUES", required_unless_present = "points", value_parser = vary)]
     vary: Vec<Vary>,
+    /// The points as a table (CSV): a header of dotted scene keys, then one row per point
+    /// with each key's value (a number, or a quantity with its unit such as `2 mm`); lines
+    /// starting with `#` are comments. The columns are zipped (--zip is implied); --vary
+    /// adds more keys, of as many values as the table has rows.
+    #[arg(long, value_name = "FILE")]
+    points: Option<PathBuf>,
+    /// Vary the keys together, point by point: point i sets every --vary key to its i-th
+    /// value (the lists must be of equal length), e.g. a wheelset's position.lateral,
+    /// position.yaw and position.roll in step. Without it the points are the cartesian
+    /// product.
+    #[arg(long)]
+    zip: bool,
     /// Directory for the table: sweep.csv and sweep.parquet, or sweep-IofN.csv and
     /// sweep-IofN.parquet for a shard (so the shards of a job array can share one
     /// directory). Other files in it are left alone.
@@ -103,7 +117,18 @@ pub fn cmd_sweep(a: &SweepArgs) -> Result<(), Failure> {
     let text = std::fs::read_to_string(&a.scene).map_err(|e| {
         Failure::Other(format!("cannot read the scene file {}: {e}", a.scene.display()), 1)
     })?;
-    let sweep = Sweep::new(&text, Some(a.scene.clone()), &a.vary)?;
+    let mut vary = a.vary.clone();
+    if let Some(p) = &a.points {
+        let table = std::fs::read_to_string(p).map_err(|e| {
+            Failure::Other(format!("cannot read the points file {}: {e}", p.display()), 2)
+        })?;
+        let mut from_file = read_points(&table, &p.display().to_string())
+            .map_err(|e| Failure::Other(e.to_string(), 2))?;
+        from_file.append(&mut vary);
+        vary = from_file;
+    }
+    let mode = if a.zip || a.points.is_some() { Mode::Zip } else { Mode::Cartesian };
+    let sweep = Sweep::with_mode(&text, Some(a.scene.clone()), &vary, mode)?;
     let shard = a.shard.unwrap_or(Shard::ALL);
     let n = shard.points(sweep.len()).count();
     let bar = std::io::stderr().is_terminal().then(|| {

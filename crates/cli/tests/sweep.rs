@@ -206,3 +206,74 @@ fn a_killed_sweep_resumes_without_solving_a_point_twice_or_losing_one() {
     assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
     let _ = std::fs::remove_dir_all(&d);
 }
+
+#[test]
+fn zipped_and_points_sweeps_take_the_keys_in_step() {
+    let d = tmp("zip");
+    let o = bin()
+        .arg("sweep")
+        .arg(scene())
+        .args(["--zip", "--vary", "load.tangential=0 kN/m,10 kN/m", "--vary"])
+        .args(["load.friction=0.2,0.3", "--out"])
+        .arg(d.join("zip"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("2 points: 2 ok"));
+    // The same points from a table.
+    let points = d.join("points.csv");
+    std::fs::write(
+        &points,
+        "# two points\nload.tangential,load.friction\n0 kN/m,0.2\n10 kN/m,0.3\n",
+    )
+    .unwrap();
+    let o = bin()
+        .arg("sweep")
+        .arg(scene())
+        .arg("--points")
+        .arg(&points)
+        .arg("--out")
+        .arg(d.join("points"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let a = std::fs::read_to_string(d.join("zip/sweep.csv")).unwrap();
+    let b = std::fs::read_to_string(d.join("points/sweep.csv")).unwrap();
+    assert_eq!(a, b);
+    assert_eq!(a.lines().count(), 3, "{a}");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn zipped_lists_of_unequal_length_and_bad_points_tables_exit_2() {
+    let d = tmp("zip-bad");
+    let o = bin()
+        .arg("sweep")
+        .arg(scene())
+        .args(["--zip", "--vary", "load.tangential=0 kN/m,10 kN/m", "--vary"])
+        .args(["load.friction=0.2,0.3,0.4", "--out"])
+        .arg(d.join("out"))
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("load.friction") && err.contains("3 values"), "{err}");
+    assert!(!d.join("out").exists());
+    std::fs::create_dir_all(&d).unwrap();
+    let points = d.join("points.csv");
+    std::fs::write(&points, "load.tangential,load.friction\n0 kN/m,0.2\n10 kN/m\n").unwrap();
+    let o = bin()
+        .arg("sweep")
+        .arg(scene())
+        .arg("--points")
+        .arg(&points)
+        .arg("--out")
+        .arg(d.join("out"))
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("points.csv:3: 1 values for 2 keys") && err.contains("hint:"), "{err}");
+    assert!(!d.join("out").exists());
+    let _ = std::fs::remove_dir_all(&d);
+}

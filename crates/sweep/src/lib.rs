@@ -1,5 +1,6 @@
 //! Parameter sweeps: one scene, some of its keys varied over lists or ranges, every point of
-//! the cartesian product an independent, audited run, gathered into one table.
+//! the cartesian product (or, zipped, of the lists taken in step) an independent, audited
+//! run, gathered into one table.
 //!
 //! - [`Vary`]: a `--vary` specification (`key=start:end:count` or `key=v1,v2,...`; values
 //!   are numbers, or text such as quantities with units, `"10 N"`);
@@ -7,7 +8,9 @@
 //!   varied key in the TOML document (`toml_edit`, so the rest of the file is untouched) and
 //!   reads the result with the ordinary reader, so each point gets the same validation and
 //!   file:line:column errors as a scene file; points are numbered in cartesian order, the
-//!   last varied key fastest;
+//!   last varied key fastest; [`Sweep::zipped`] instead takes the keys' lists in step
+//!   (point `i` sets every key to its `i`-th value; the lists are of equal length), as
+//!   vehicle dynamics sweeps a wheelset's lateral shift, yaw and roll together;
 //! - [`Shard`]: `i/N`, the points whose index is `i - 1` modulo `N` (for job arrays);
 //! - [`Sweep::run_point`]: plan, check against the machine, execute and audit one point, into
 //!   one row of the [`Table`]: the point index, the sweep's identity, the varied values, the
@@ -41,7 +44,7 @@ use rayon::prelude::*;
 
 pub use journal::{journal_path, write_atomically, Journaled};
 pub use table::{format_f64, Cell, Kind, Table, TableError};
-pub use vary::{Vary, VaryError, VaryValue};
+pub use vary::{read_points, PointsError, Vary, VaryError, VaryValue};
 
 use stickslip_run::{read_scene, Execute, MachineLimits, Outcome, Plan, RunOptions};
 use stickslip_scene::{ErrorKind, SceneError};
@@ -120,12 +123,52 @@ impl Shard {
     }
 }
 
-/// A sweep: the scene text, where it came from, and the varied keys.
+/// How the varied keys' values combine into points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// Every combination: the cartesian product, the last key fastest.
+    Cartesian,
+    /// The lists in step: point `i` takes the `i`-th value of every key (lists of equal
+    /// length).
+    Zip,
+}
+
+/// The number of patches of a wheel on its rail that get their own columns in the table
+/// (`patch0_...` to `patch2_...`): tread, flange and one more.
+pub const WHEEL_RAIL_PATCH_COLUMNS: usize = 3;
+
+/// The columns of a wheel-rail sweep after [`FIXED_TAIL`]: the wheelset's height, the
+/// force of the wheel on the rail in track coordinates, the number of patches.
+pub const WHEEL_RAIL_TAIL: &[&str] = &["z_wheelset", "fx_rail", "fy_rail", "fz_rail", "patches"];
+
+/// The columns of each patch `k` of a wheel-rail sweep, named `patch{k}_{name}` (SI, the
+/// keys of result.json's `wheel_rail.patches`).
+pub const WHEEL_RAIL_PATCH: &[&str] = &[
+    "y_rail",
+    "z_rail",
+    "y_wheel",
+    "contact_angle",
+    "rolling_radius",
+    "creepage_longitudinal",
+    "creepage_lateral",
+    "creepage_spin",
+    "fn",
+    "fx",
+    "fs",
+    "mn",
+    "pmax",
+    "area",
+    "stick_fraction",
+];
+
+/// A sweep: the scene text, where it came from, the varied keys and how they combine.
 #[derive(Debug, Clone)]
 pub struct Sweep {
     text: String,
     file: Option<PathBuf>,
     vary: Vec<Vary>,
+    mode: Mode,
+    wheel_rail: bool,
     id: String,
 }
 
@@ -149,6 +192,29 @@ impl Sweep {
     /// (syntax, schema, unit) of the first point, which would fail every point alike: a
     /// key the format does not have, a value of the wrong type, a unit that does not read.
     pub fn new(text: &str, file: Option<PathBuf>, vary: &[Vary]) -> Result<Sweep, SceneError> {
+        Self::with_mode(text, file, vary, Mode::Cartesian)
+    }
+
+    /// A sweep of the scene `text` over `vary` taken in step ([`Mode::Zip`]): point `i` sets
+    /// every varied key to its `i`-th value.
+    ///
+    /// # Errors
+    /// Those of [`Sweep::new`], and a [`SceneError`] on the first key whose number of
+    /// values differs from the first key's.
+    pub fn zipped(text: &str, file: Option<PathBuf>, vary: &[Vary]) -> Result<Sweep, SceneError> {
+        Self::with_mode(text, file, vary, Mode::Zip)
+    }
+
+    /// A sweep of `text` over `vary` combined by `mode` ([`Sweep::new`], [`Sweep::zipped`]).
+    ///
+    /// # Errors
+    /// As [`Sweep::new`] and [`Sweep::zipped`].
+    pub fn with_mode(
+        text: &str,
+        file: Option<PathBuf>,
+        vary: &[Vary],
+        mode: Mode,
+    ) -> Result<Sweep, SceneError> {
         if let Err(e) = text.parse::<toml_edit::DocumentMut>() {
             // The scene reader locates the error (file:line:column).
             return Err(match read_scene(text, file.clone()) {
@@ -167,8 +233,32 @@ impl Sweep {
                 ));
             }
         }
+        if mode == Mode::Zip {
+            if let Some(first) = vary.first() {
+                let n = first.values.len();
+                if let Some(v) = vary.iter().find(|v| v.values.len() != n) {
+                    return Err(sweep_error(
+                        file.as_ref(),
+                        &v.key,
+                        format!(
+                            "--zip: `{}` has {} values but `{}` has {n}; zipped keys take one \
+                             value each per point",
+                            v.key,
+                            v.values.len(),
+                            first.key
+                        ),
+                        "give every --vary the same number of values, or drop --zip for the \
+                         cartesian product",
+                    ));
+                }
+            }
+        }
         let mut h = fnv::FnvHasher::default();
         h.write(text.as_bytes());
+        if mode == Mode::Zip {
+            // Cartesian sweeps keep the identity they had before zipped sweeps existed.
+            h.write(b"\0zip");
+        }
         for v in vary {
             h.write(&[0]);
             h.write(v.key.as_bytes());
@@ -178,10 +268,12 @@ impl Sweep {
                 h.write(&[1]);
             }
         }
-        let s = Sweep {
+        let mut s = Sweep {
             text: text.to_string(),
             file,
             vary: vary.to_vec(),
+            mode,
+            wheel_rail: false,
             id: format!("{:016x}", h.finish()),
         };
         // Setting the keys can fail only for the document's structure, the same at every
@@ -189,11 +281,18 @@ impl Sweep {
         // A reading error (a misspelt key, a missing table) fails every point the same way:
         // refuse it at once. Range and combination refusals may depend on the point.
         if !s.is_empty() {
-            if let Err(e) = read_scene(&s.point_text(0)?, s.file.clone()) {
+            let first = s.point_text(0)?;
+            if let Err(e) = read_scene(&first, s.file.clone()) {
                 if matches!(e.kind, ErrorKind::Syntax | ErrorKind::Schema | ErrorKind::Unit) {
                     return Err(e);
                 }
             }
+            // A wheel on its rail gets the columns of its wheelset and patches.
+            s.wheel_rail = first
+                .parse::<toml_edit::DocumentMut>()
+                .ok()
+                .and_then(|d| d.get("geometry")?.get("kind")?.as_str().map(|k| k == "wheel-rail"))
+                .unwrap_or(false);
         }
         Ok(s)
     }
@@ -210,9 +309,18 @@ impl Sweep {
         &self.vary
     }
 
-    /// The number of points (the product of the numbers of values).
+    /// How the varied keys combine.
+    pub fn mode(&self) -> Mode {
+        self.mode
+    }
+
+    /// The number of points (the product of the numbers of values; zipped, the length of
+    /// the lists).
     pub fn len(&self) -> usize {
-        self.vary.iter().map(|v| v.values.len()).product()
+        match self.mode {
+            Mode::Cartesian => self.vary.iter().map(|v| v.values.len()).product(),
+            Mode::Zip => self.vary.first().map_or(1, |v| v.values.len()),
+        }
     }
 
     /// True when some varied key has no values.
@@ -220,8 +328,12 @@ impl Sweep {
         self.len() == 0
     }
 
-    /// The value of each varied key at point `i` (cartesian order, the last key fastest).
+    /// The value of each varied key at point `i` (cartesian order, the last key fastest;
+    /// zipped, the `i`-th value of each).
     pub fn values(&self, i: usize) -> Vec<&VaryValue> {
+        if self.mode == Mode::Zip {
+            return self.vary.iter().map(|v| &v.values[i]).collect();
+        }
         let mut rest = i;
         let mut out: Vec<&VaryValue> = self
             .vary
@@ -263,7 +375,9 @@ impl Sweep {
     }
 
     /// The table's columns: [`FIXED_HEAD`], one per varied key (integers when all its
-    /// values are whole numbers, numbers when all are numbers, else text), [`FIXED_TAIL`].
+    /// values are whole numbers, numbers when all are numbers, else text), [`FIXED_TAIL`];
+    /// for a wheel on its rail then [`WHEEL_RAIL_TAIL`] and, for each of the first
+    /// [`WHEEL_RAIL_PATCH_COLUMNS`] patches, [`WHEEL_RAIL_PATCH`] as `patch{k}_{name}`.
     pub fn columns(&self) -> Vec<(String, Kind)> {
         let head = FIXED_HEAD.iter().map(|(n, k)| (n.to_string(), *k));
         let varied = self.vary.iter().map(|v| {
@@ -277,7 +391,14 @@ impl Sweep {
             (v.key.clone(), kind)
         });
         let tail = FIXED_TAIL.iter().map(|(n, k)| (n.to_string(), *k));
-        head.chain(varied).chain(tail).collect()
+        let mut all: Vec<(String, Kind)> = head.chain(varied).chain(tail).collect();
+        if self.wheel_rail {
+            all.extend(WHEEL_RAIL_TAIL.iter().map(|n| (n.to_string(), Kind::Float)));
+            for k in 0..WHEEL_RAIL_PATCH_COLUMNS {
+                all.extend(WHEEL_RAIL_PATCH.iter().map(|n| (format!("patch{k}_{n}"), Kind::Float)));
+            }
+        }
+        all
     }
 
     /// Run point `i` on its own: read, plan, check against the machine (`time_limit`
@@ -329,6 +450,9 @@ impl Sweep {
                     _ => Cell::Float(None),
                 }));
             }
+        }
+        if self.wheel_rail {
+            row.extend(wheel_rail_results(result.as_ref().ok()));
         }
         row
     }
@@ -473,6 +597,42 @@ fn results(o: &Outcome) -> Vec<Cell> {
         f(o.audit.checks.len() as f64),
         Cell::Text(Some(o.solver.method.clone())),
     ]
+}
+
+/// The wheel-rail cells of a row ([`WHEEL_RAIL_TAIL`], then [`WHEEL_RAIL_PATCH`] per
+/// patch); empty cells for a failed point, a patch that did not form, or a result that does
+/// not apply (no stick fraction without creep forces).
+fn wheel_rail_results(o: Option<&Outcome>) -> Vec<Cell> {
+    let n = WHEEL_RAIL_TAIL.len() + WHEEL_RAIL_PATCH_COLUMNS * WHEEL_RAIL_PATCH.len();
+    let Some(w) = o.and_then(|o| o.wheel_rail.as_ref()) else {
+        return vec![Cell::Float(None); n];
+    };
+    let f = |x: f64| Cell::Float(Some(x));
+    let t = &w.total_on_rail;
+    let mut row = vec![f(w.z_wheelset), f(t.fx), f(t.fy), f(t.fz), f(w.patches.len() as f64)];
+    for k in 0..WHEEL_RAIL_PATCH_COLUMNS {
+        match w.patches.get(k) {
+            Some(p) => row.extend([
+                f(p.y_rail),
+                f(p.z_rail),
+                f(p.y_wheel),
+                f(p.contact_angle),
+                f(p.rolling_radius),
+                f(p.creepage.longitudinal),
+                f(p.creepage.lateral),
+                f(p.creepage.spin),
+                f(p.fn_),
+                f(p.fx),
+                f(p.fs),
+                f(p.mn),
+                f(p.pmax),
+                f(p.area),
+                Cell::Float(p.stick_fraction),
+            ]),
+            None => row.extend(std::iter::repeat_n(Cell::Float(None), WHEEL_RAIL_PATCH.len())),
+        }
+    }
+    row
 }
 
 /// The stick share of the contact: a grid solution's stick area fraction; for intervals

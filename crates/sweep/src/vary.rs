@@ -224,6 +224,90 @@ impl Vary {
     }
 }
 
+/// A points table (`stickslip sweep --points`) that cannot be read.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PointsError {
+    /// The file's name as given.
+    pub file: String,
+    /// The line (1-based).
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+    /// What is allowed.
+    pub hint: String,
+}
+
+impl fmt::Display for PointsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}: {}\n  hint: {}", self.file, self.line, self.message, self.hint)
+    }
+}
+
+impl std::error::Error for PointsError {}
+
+/// The varied keys of a points table: a header of dotted scene keys separated by commas,
+/// then one row per point with each key's value (a number, or a quantity with its unit such
+/// as `2 mm`); blank lines and lines starting with `#` are skipped. The keys are meant to
+/// be zipped ([`crate::Sweep::zipped`]): row `i` is point `i`.
+///
+/// # Errors
+/// A [`PointsError`] naming `file` and the line: no header, a row with too few or too many
+/// values or an empty one, no rows, a key that is not a dotted scene key.
+pub fn read_points(text: &str, file: &str) -> Result<Vec<Vary>, PointsError> {
+    let bad = |line: usize, message: String, hint: &str| PointsError {
+        file: file.to_string(),
+        line,
+        message,
+        hint: hint.to_string(),
+    };
+    let per_row = "give every row one value per key of the header";
+    let mut rows = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let Some((header_line, header)) = rows.next() else {
+        return Err(bad(
+            1,
+            "no header: the file holds no points".into(),
+            "write a header of scene keys (e.g. position.lateral,position.yaw), then one row \
+             per point",
+        ));
+    };
+    let keys: Vec<&str> = header.split(',').map(str::trim).collect();
+    let mut columns: Vec<Vec<String>> = vec![Vec::new(); keys.len()];
+    for (line, l) in rows {
+        let cells: Vec<&str> = l.split(',').map(str::trim).collect();
+        if cells.len() != keys.len() {
+            return Err(bad(
+                line,
+                format!("{} values for {} keys", cells.len(), keys.len()),
+                per_row,
+            ));
+        }
+        if let Some(j) = cells.iter().position(|c| c.is_empty()) {
+            return Err(bad(line, format!("no value for `{}`", keys[j]), per_row));
+        }
+        for (c, v) in columns.iter_mut().zip(cells) {
+            c.push(v.to_string());
+        }
+    }
+    if columns.first().is_none_or(Vec::is_empty) {
+        return Err(bad(
+            header_line,
+            "a header but no points".into(),
+            "add one row per point below the header",
+        ));
+    }
+    keys.iter()
+        .zip(columns)
+        .map(|(k, vals)| {
+            Vary::parse(&format!("{k}={}", vals.join(",")))
+                .map_err(|e| bad(header_line, format!("column `{k}`: {}", e.message), &e.hint))
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -248,6 +332,32 @@ mod tests {
         let v = Vary::parse("solver.method=fast,lp").unwrap();
         assert_eq!(v.values[1], VaryValue::Text("lp".into()));
         assert!(!v.numeric());
+    }
+
+    #[test]
+    fn points_tables_read_and_refuse() {
+        let t = "# a comment\nposition.lateral, position.yaw\n0 mm, 0 mrad\n\n2 mm,4.8 mrad\n";
+        let v = read_points(t, "p.csv").unwrap();
+        assert_eq!(v.len(), 2);
+        assert_eq!(v[0].key, "position.lateral");
+        assert_eq!(
+            v[1].values,
+            vec![VaryValue::Text("0 mrad".into()), VaryValue::Text("4.8 mrad".into())]
+        );
+        let cases = [
+            ("", 1, "no header"),
+            ("# only\n", 1, "no header"),
+            ("a.b,c.d\n", 1, "no points"),
+            ("a.b,c.d\n1,2\n3\n", 3, "1 values for 2 keys"),
+            ("a.b,c.d\n1,\n", 2, "no value for `c.d`"),
+            ("a..b,c.d\n1,2\n", 1, "column `a..b`"),
+        ];
+        for (text, line, want) in cases {
+            let e = read_points(text, "p.csv").unwrap_err();
+            assert_eq!(e.line, line, "{text:?}");
+            assert!(e.message.contains(want), "{text:?}: {}", e.message);
+            assert!(e.to_string().starts_with(&format!("p.csv:{line}: ")), "{e}");
+        }
     }
 
     #[test]
