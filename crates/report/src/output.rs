@@ -302,6 +302,26 @@ pub(crate) fn render(
         }
         files.push(("load_curve.csv".to_string(), std::mem::take(&mut s)));
     }
+    if let Some(w) = &out.wheel_rail {
+        // Each patch's maps, (ns, nx) as a surface's are (ny, nx).
+        for (k, p) in w.patches.iter().enumerate() {
+            let m = &p.maps;
+            let shape = [m.s.len(), m.x.len()];
+            if m.pressure.len() != shape[0] * shape[1] {
+                continue;
+            }
+            binary.push((format!("patch{k}_x.npy"), npy(&m.x, &[shape[1]])));
+            binary.push((format!("patch{k}_s.npy"), npy(&m.s, &[shape[0]])));
+            binary.push((format!("patch{k}_pressure.npy"), npy(&m.pressure, &shape)));
+            binary.push((format!("patch{k}_gap.npy"), npy(&m.gap, &shape)));
+            if let (Some(qx), Some(qs)) = (&m.qx, &m.qs) {
+                binary.push((format!("patch{k}_qx.npy"), npy(qx, &shape)));
+                binary.push((format!("patch{k}_qs.npy"), npy(qs, &shape)));
+                let st: Vec<f64> = m.stick.iter().map(|&v| f64::from(v)).collect();
+                binary.push((format!("patch{k}_stick.npy"), npy(&st, &shape)));
+            }
+        }
+    }
     let svgs = if plots {
         crate::plots::render(out, ctx.map(|c| c.plan)).map_err(|e| {
             SceneError::new(ErrorKind::Io, format!("cannot draw the plots: {e}"))

@@ -95,3 +95,68 @@ fn a_surface_writes_its_maps_as_npy_with_the_gap_closed_under_pressure() {
     assert!(in_contact > 100);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The shipped wheel-on-rail scene (Manchester, position 5): each patch's maps are
+/// written as `patch{k}_*.npy`, (ns, nx), and integrate to the patch's forces in
+/// result.json; the stick map gives its stick fraction.
+#[test]
+fn a_wheel_on_rail_writes_each_patch_as_npy() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let file = root.join("scenes/wheel_rail_manchester_a22.toml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let out =
+        run(&Scene::from_toml_str(&text, Some(file)).unwrap(), &RunOptions::default()).unwrap();
+    let dir = std::env::temp_dir().join(format!("stickslip-wheel-rail-npy-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    write_outputs(&out, &dir, false).unwrap();
+    let read = |name: &str| -> (Vec<usize>, Vec<f64>) {
+        let b = std::fs::read(dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let h = u16::from_le_bytes([b[8], b[9]]) as usize;
+        let header = std::str::from_utf8(&b[10..10 + h]).unwrap();
+        let shape = header.split("'shape': (").nth(1).unwrap().split(')').next().unwrap();
+        let shape: Vec<usize> = shape
+            .split(',')
+            .filter(|t| !t.trim().is_empty())
+            .map(|t| t.trim().parse().unwrap())
+            .collect();
+        let v = b[10 + h..]
+            .chunks_exact(8)
+            .map(|c| f64::from_le_bytes(c.try_into().unwrap()))
+            .collect();
+        (shape, v)
+    };
+    let w = out.wheel_rail.as_ref().unwrap();
+    assert_eq!(w.patches.len(), 1);
+    let p = &w.patches[0];
+    let (_, x) = read("patch0_x.npy");
+    let (_, s) = read("patch0_s.npy");
+    assert_eq!((x.len(), s.len()), (p.lattice.nx, p.lattice.ns));
+    assert!(
+        (x[1] - x[0] - p.lattice.hx).abs() < 1e-15 && (s[1] - s[0] - p.lattice.hs).abs() < 1e-15
+    );
+    let (shape, pressure) = read("patch0_pressure.npy");
+    assert_eq!(shape, [s.len(), x.len()]);
+    let cell = p.lattice.hx * p.lattice.hs;
+    let sum = |v: &[f64]| v.iter().sum::<f64>() * cell;
+    assert!((sum(&pressure) / p.fn_ - 1.0).abs() < 1e-9, "{} vs {}", sum(&pressure), p.fn_);
+    assert_eq!(pressure.iter().copied().fold(0.0, f64::max), p.pmax);
+    let fmax = 0.3 * p.fn_;
+    let (_, qx) = read("patch0_qx.npy");
+    let (_, qs) = read("patch0_qs.npy");
+    assert!((sum(&qx) - p.fx).abs() < 1e-9 * fmax, "{} vs {}", sum(&qx), p.fx);
+    assert!((sum(&qs) - p.fs).abs() < 1e-9 * fmax, "{} vs {}", sum(&qs), p.fs);
+    let (_, stick) = read("patch0_stick.npy");
+    let contact = stick.iter().filter(|&&v| v >= 0.0).count();
+    assert_eq!(contact, p.contact_cells);
+    let sticking = stick.iter().filter(|&&v| v == 1.0).count() as f64 / contact as f64;
+    assert!((sticking - p.stick_fraction.unwrap()).abs() < 1e-12);
+    // Outside the contact no pressure and no traction.
+    for k in 0..stick.len() {
+        if stick[k] < 0.0 {
+            assert!(pressure[k] == 0.0 && qx[k] == 0.0 && qs[k] == 0.0, "cell {k}");
+        }
+    }
+    let (_, gap) = read("patch0_gap.npy");
+    assert!(gap.iter().copied().fold(f64::INFINITY, f64::min) < 0.0, "the profiles interpenetrate");
+    let _ = std::fs::remove_dir_all(&dir);
+}

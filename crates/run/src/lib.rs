@@ -62,8 +62,8 @@ pub use stickslip_plan as plan;
 pub use exec::outcome::{
     Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
     FieldOut, FieldPeak, Forces, GridZones, HistoryLoopOut, HistoryOut, NormalSolverOut, Outcome,
-    Progress, RigidOut, RollingOut, RuizMaxOut, RunOptions, SolverOut, SurfaceOut, VolumeField,
-    Zones, INLINE_FIELD_POINTS,
+    PatchMaps, Progress, RigidOut, RollingOut, RuizMaxOut, RunOptions, SolverOut, SurfaceOut,
+    TrackForce, VolumeField, WheelRailOut, WheelRailPatchOut, Zones, INLINE_FIELD_POINTS,
 };
 pub use exec::{execute, Execute};
 pub use stickslip_plan::recipe::Recipe;

@@ -574,6 +574,32 @@ pub struct WheelRailPatchOut {
     /// The Coulomb check of this patch: max over its contact cells of (|q| - f p)/(f pmax).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub coulomb: Option<f64>,
+    /// The patch's maps on its lattice (written as `patch{k}_*.npy`, drawn in report.html;
+    /// not in result.json).
+    #[serde(skip)]
+    pub maps: PatchMaps,
+}
+
+/// One wheel-rail patch's maps on its lattice, row-major `(ns, nx)`: row `j` across the
+/// patch (s), column `i` along x; patch coordinates (m), forces on the rail.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PatchMaps {
+    /// Cell centres along x (m), `nx` of them.
+    pub x: Vec<f64>,
+    /// Cell centres across the patch, s (m), `ns` of them.
+    pub s: Vec<f64>,
+    /// Pressure (Pa).
+    pub pressure: Vec<f64>,
+    /// The undeformed gap at the final wheelset height (m; negative where the profiles
+    /// interpenetrate).
+    pub gap: Vec<f64>,
+    /// Traction on the rail along x (Pa), with a tangential solution.
+    pub qx: Option<Vec<f64>>,
+    /// Traction on the rail along s (Pa), with a tangential solution.
+    pub qs: Option<Vec<f64>>,
+    /// 1 stick, 0 slip, -1 outside the contact, with a tangential solution (else 0 in the
+    /// contact).
+    pub stick: Vec<i8>,
 }
 
 /// A patch lattice as reported.

@@ -3,8 +3,8 @@
 //! patches reported in result.json's `wheel_rail`.
 
 use super::outcome::{
-    ContactOut, CreepageOut, Field, Forces, PatchLatticeOut, RigidOut, TangentialSolveOut,
-    TrackForce, WheelRailOut, WheelRailPatchOut, Zones,
+    ContactOut, CreepageOut, Field, Forces, PatchLatticeOut, PatchMaps, RigidOut,
+    TangentialSolveOut, TrackForce, WheelRailOut, WheelRailPatchOut, Zones,
 };
 use super::{lattice, solver_err, Ctx, Parts};
 use crate::plan::recipe::WheelRailRecipe;
@@ -28,6 +28,51 @@ fn refusal(e: wr::Error) -> SceneError {
             .hint("check [position] and [motion]"),
         e => solver_err("the wheel-rail solve", e),
     }
+}
+
+/// A patch's maps on its lattice: the normal solution's pressure and contact, the
+/// undeformed gap, and the tangential solution's tractions and stick, placed from its
+/// element centres into the lattice cells.
+fn maps(p: &wr::PatchSolution) -> Result<PatchMaps, SceneError> {
+    let n = &p.normal;
+    let (nx, ns) = (n.nx, n.ny);
+    let cells = nx * ns;
+    if n.pressure.len() != cells || n.contact.len() != cells || p.gap.len() != cells {
+        return Err(solver_err("the wheel-rail maps", "a patch's arrays do not fill its lattice"));
+    }
+    let x: Vec<f64> = (0..nx).map(|i| n.origin.0 + (i as f64 + 0.5) * n.hx).collect();
+    let s: Vec<f64> = (0..ns).map(|j| n.origin.1 + (j as f64 + 0.5) * n.hy).collect();
+    let mut stick: Vec<i8> = n.contact.iter().map(|&c| if c { 0 } else { -1 }).collect();
+    let (mut qx, mut qs) = (None, None);
+    if let Some(r) = &p.rolling {
+        let (mut mx, mut ms) = (vec![0.0; cells], vec![0.0; cells]);
+        for k in 0..r.x.len() {
+            // The element's cell from its centre.
+            let fi = (r.x[k] - n.origin.0) / n.hx - 0.5;
+            let fj = (r.y[k] - n.origin.1) / n.hy - 0.5;
+            let (i, j) = (fi.round(), fj.round());
+            if !(0.0..nx as f64).contains(&i)
+                || !(0.0..ns as f64).contains(&j)
+                || (fi - i).abs() > 1e-6
+                || (fj - j).abs() > 1e-6
+            {
+                return Err(solver_err(
+                    "the wheel-rail maps",
+                    format!(
+                        "a tangential element at ({}, {}) m is off the patch lattice",
+                        r.x[k], r.y[k]
+                    ),
+                ));
+            }
+            let c = j as usize * nx + i as usize;
+            mx[c] = r.qx[k];
+            ms[c] = r.qy[k];
+            stick[c] = i8::from(r.stick[k]);
+        }
+        qx = Some(mx);
+        qs = Some(ms);
+    }
+    Ok(PatchMaps { x, s, pressure: n.pressure.clone(), gap: p.gap.clone(), qx, qs, stick })
 }
 
 /// Solve the wheel on its rail.
@@ -103,6 +148,7 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
             },
             tangential,
             coulomb,
+            maps: maps(p)?,
         });
     }
     cx.iterations = iterations + sol.info.normal_iterations;
