@@ -7,6 +7,7 @@ mod contour;
 mod maps;
 mod parameters;
 mod raster;
+mod wheel_rail;
 
 use stickslip_run::reference;
 use stickslip_run::{Outcome, Plan, SurfaceOut};
@@ -634,6 +635,9 @@ pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, 
                 &[],
             )?,
         ));
+    }
+    if let Some(w) = &out.wheel_rail {
+        wheel_rail::render(w, st, sub, &mut files)?;
     }
     Ok(files)
 }

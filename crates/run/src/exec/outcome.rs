@@ -503,6 +503,11 @@ pub struct WheelRailOut {
     pub normal_vertical: f64,
     /// The contact patches, in the library's order.
     pub patches: Vec<WheelRailPatchOut>,
+    /// The rail and wheel profiles at the solved position as polylines in track
+    /// coordinates (y, z), m; the wheel's section through its lowest points (for drawing;
+    /// not in result.json).
+    #[serde(skip)]
+    pub profiles: [Vec<[f64; 2]>; 2],
 }
 
 /// A force in track coordinates.

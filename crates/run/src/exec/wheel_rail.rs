@@ -239,6 +239,10 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
             },
             normal_vertical,
             patches,
+            profiles: {
+                let (rail, wheel) = pb.profiles_at(&r.position, sol.z_wheelset);
+                [rail, wheel]
+            },
         }),
     })
 }
