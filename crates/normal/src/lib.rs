@@ -37,8 +37,8 @@ pub mod solver;
 pub use coupled::{CoupledInfo, CoupledProblem, CoupledSolution};
 pub use error::{Error, Result};
 pub use solver::{
-    LevelInfo, Nesting, NormalInfo, NormalLoad, NormalProblem, NormalSolution, Preconditioner,
-    NEST_MIN_CELLS,
+    Adhesion, AdhesiveSolution, LevelInfo, Nesting, NormalInfo, NormalLoad, NormalProblem,
+    NormalSolution, Preconditioner, NEST_MIN_CELLS,
 };
 pub use stickslip_lattice::{Boundary, CrossOperator, NormalOperator, NormalScratch};
 pub use stickslip_quad::Tolerance;

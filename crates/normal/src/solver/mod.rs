@@ -107,6 +107,28 @@
 //! coarse capped pressure, and its approach is estimated from it. A force at or above $H$
 //! times the lattice area is refused ([`Error::AboveCapacity`]).
 //!
+//! # Adhesion
+//!
+//! [`NormalProblem::solve_adhesive`] adds a Maugis–Dugdale interface ([`Adhesion`]: the work
+//! of adhesion $w$ and the range $h_0$; Maugis 1992, *J. Colloid Interface Sci.* 150): the
+//! constant tensile traction $\sigma_0 = w/h_0$ acts on every cell whose gap is below the
+//! range, the contact ($g_k = 0$) included. With $Z = \{k : g_k < h_0\}$ the cohesive zone
+//! and $p^c \ge 0$ the contact pressure, the total pressure is
+//! $p_k = p^c_k - \sigma_0[k\in Z]$ and $g = g^0 + Kp - \delta$ with $p^c_kg_k = 0$,
+//! $g_k \ge 0$. For a fixed zone this is the elastic contact problem above with the initial
+//! gap $g^0 - \sigma_0K\mathbf 1_Z$, solved by the same iteration; the zone is then
+//! replaced by $\{g_k < h_0\}$ of that solution, until it reproduces itself exactly (a
+//! fixed point, so the zone condition holds by construction and the residuals are those of
+//! the last contact solve). Each contact solve starts from the previous contact pressure.
+//! Under approach control this is the energy's stationary point reached from the start:
+//! a larger zone pulls the surfaces closer, so from a zone inside the solution's (the
+//! approach from far: no zone; or the previous step of an approach path) the zones grow
+//! monotonically, and from one outside it (a retraction path) they shrink; the contact
+//! therefore stays on its branch until that branch ends and jumps in (or out) there, which
+//! is the hysteresis of adhesive contact. Force control is not offered: on the unstable
+//! branch of adhesion the force does not determine the state. Adhesion and a hardness
+//! together are refused.
+//!
 //! # Certified stop: the residuals
 //!
 //! At every iteration the current pressure $p$ is checked against the conditions above with
@@ -146,12 +168,14 @@
 //! [`NormalSolution::contact_grid`] turns the contact cells and their pressure into a
 //! [`ContactGrid`](stickslip_lattice::ContactGrid) for the tangential solvers (partial slip on the computed contact).
 
+mod adhesive;
 mod capped;
 mod iteration;
 mod nested;
 mod passes;
 mod solution;
 
+pub use adhesive::{Adhesion, AdhesiveSolution, ADHESIVE_SOLVER_NAME, DEFAULT_MAX_ZONE_UPDATES};
 pub use solution::{NormalInfo, NormalSolution};
 
 use crate::error::{positive, tolerance_in, Error, Result};
