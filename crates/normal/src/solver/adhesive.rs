@@ -65,7 +65,7 @@ impl Adhesion {
 /// cohesive zone.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AdhesiveSolution {
-    /// The solution with the **total** pressure $p_k = p^c_k - \sigma_0[g_k < h_0]$ (Pa,
+    /// The solution with the **total** pressure $p_k = p^c_k - \sigma_0\mathbf 1_Z(k)$ (Pa,
     /// compressive positive, negative where the adhesion pulls), its force
     /// $h_xh_y\sum_k p_k$ (negative when pulling), the contact $p^c_k > 0$ (the gap closed),
     /// the gap after loading, and the termination information of the last contact solve
