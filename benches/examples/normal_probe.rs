@@ -14,7 +14,12 @@
 //! `scripts/compare_aspher.py`, then exit), `pressure=FILE` (write the pressure after the
 //! solve), `hardness=H` (cap the pressure at H Pa, issue 32; the line then also gives the
 //! plastic share of the contact and the peak pressure), `approach=D` (approach control at D m
-//! instead of the force). Prints one line: the levels with their iterations, the fine iterations and FFT
+//! instead of the force), `adhesion=W,R` (a Maugis–Dugdale interface of work W J/m² and
+//! range R m, issue 32; needs `approach=`; the line then also gives the zone cells and the
+//! zone updates, and `iterations`/`products` are summed over the contact solves),
+//! `gap=FILE` (`rough` only: the initial gap of the N x N period read from FILE as
+//! little-endian f64 instead of the built-in surface), `young=E` and `poisson=NU` (the body
+//! instead of steel), `gapout=FILE` (write the gap after the solve). Prints one line: the levels with their iterations, the fine iterations and FFT
 //! products, the residuals, the contact fraction, the times (set-up, coarse levels, whole
 //! solve), one product's time, and the peak resident memory in doubles per cell.
 
@@ -24,7 +29,8 @@ use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_benches::surfaces::{hertz_gap, rough_problem, PERIOD};
 use stickslip_halfspace::material::composite_modulus;
 use stickslip_halfspace::Material;
-use stickslip_normal::{Boundary, Nesting, NormalLoad, NormalProblem, Preconditioner};
+use stickslip_normal::solver::DEFAULT_MAX_ZONE_UPDATES;
+use stickslip_normal::{Adhesion, Boundary, Nesting, NormalLoad, NormalProblem, Preconditioner};
 use stickslip_quad::Tolerance;
 
 fn main() {
@@ -34,11 +40,21 @@ fn main() {
     let opt = |k: &str| args.iter().find_map(|a| a.strip_prefix(k).map(str::to_string));
     let flag = |k: &str| args.iter().any(|a| a == k);
     let tol: f64 = opt("tol=").and_then(|v| v.parse().ok()).unwrap_or(1e-8);
-    let steel = Material::new(210e9, 0.3).expect("steel");
+    let young: f64 = opt("young=").and_then(|v| v.parse().ok()).unwrap_or(210e9);
+    let poisson: f64 = opt("poisson=").and_then(|v| v.parse().ok()).unwrap_or(0.3);
+    let steel = Material::new(young, poisson).expect("body");
     let rigid = Material::rigid();
     let (gap, boundary, load, side) = match case.as_str() {
         "rough" => {
-            let (gap, pm) = rough_problem(n);
+            let (mut gap, pm) = rough_problem(n);
+            if let Some(file) = opt("gap=") {
+                let bytes = std::fs::read(&file).expect("read gap=");
+                assert_eq!(bytes.len(), 8 * n * n, "gap= holds N x N little-endian f64");
+                gap = bytes
+                    .chunks_exact(8)
+                    .map(|b| f64::from_le_bytes(b.try_into().expect("8 bytes")))
+                    .collect();
+            }
             let pm = opt("pm=").and_then(|v| v.parse().ok()).unwrap_or(pm);
             (gap, Boundary::Periodic, pm * PERIOD * PERIOD, PERIOD)
         }
@@ -77,7 +93,30 @@ fn main() {
         Some(d) => NormalLoad::Approach(d),
         None => NormalLoad::Force(load),
     };
-    let s = problem.solve(control).expect("solve");
+    let adhesion = opt("adhesion=").map(|v| {
+        let (w, r) = v.split_once(',').expect("adhesion=W,R");
+        Adhesion::new(w.parse().expect("W"), r.parse().expect("R")).expect("adhesion")
+    });
+    let s = match (adhesion, control) {
+        (Some(adh), NormalLoad::Approach(d)) => {
+            let op = problem.operator();
+            let a = problem
+                .solve_adhesive(&op, adh, d, None, DEFAULT_MAX_ZONE_UPDATES)
+                .expect("adhesive solve");
+            println!(
+                "adhesion w {:e} J/m^2 range {:e} m: zone {} cells ({} outside the contact), {} zone updates, zone residual {:e}",
+                adh.work(),
+                adh.range(),
+                a.zone_cells,
+                a.cohesive_only_cells(),
+                a.zone_updates,
+                a.zone_residual
+            );
+            a.normal
+        }
+        (Some(_), NormalLoad::Force(_)) => panic!("adhesion= needs approach="),
+        (None, control) => problem.solve(control).expect("solve"),
+    };
     let (wall, cpu) = (t0.elapsed().as_secs_f64(), cpu_seconds() - c0);
     let peak = peak_rss() as f64 / (8.0 * (n * n) as f64);
     let levels: Vec<String> = s
@@ -107,6 +146,12 @@ fn main() {
         s.info.coarse_seconds,
         s.info.solve_seconds,
     );
+    if let Some(file) = opt("gapout=") {
+        let mut f = std::fs::File::create(&file).expect("create");
+        for v in &s.gap {
+            f.write_all(&v.to_le_bytes()).expect("write");
+        }
+    }
     if let Some(file) = opt("pressure=") {
         let mut f = std::fs::File::create(&file).expect("create");
         for v in &s.pressure {

@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""Our Maugis-Dugdale adhesion beside tamaas's MaugisAdhesionFunctional on one rough surface
+(not run in CI; written without tamaas installed, so not yet run: see docs/peers.md).
+
+The periodic surface of scripts/compare_tamaas.py (its generator), 1 mm period, pressed by a
+rigid body on a soft elastic half-space (E = 1 MPa, nu = 0.5 unless given) with a
+Maugis-Dugdale interface of work w and range h0 (cohesive stress w / h0 wherever the gap is
+below h0). Ours: `NormalProblem::solve_adhesive` under approach control, through the bench
+example normal_probe (`gap=` the heights written here, `adhesion=W,R`, `approach=D`); it
+writes its pressure and gap. Tamaas: `BeckTeboulle` (accelerated projected gradient on the
+gap) with a `MaugisAdhesionFunctional` term of the same w and h0, solved for the mean gap
+that our solution has (tamaas poses the approach by the mean gap), so both solve the same
+state. Both use the periodic half-space transfer 2/(E*|q|).
+
+Adhesive problems have several solutions at one approach (the branches of the hysteresis):
+ours is the one reached from no zone (the approach from far), tamaas's the one its
+iteration reaches from its start; a difference of branch shows as a different contact and
+force, which the script prints rather than hides.
+
+Printed: mean pressure (negative = pulling), contact fraction, zone fraction (gap < h0),
+iterations, solve time, and ||p_ours - p_tamaas|| / ||p_tamaas||.
+
+Usage (tamaas in a venv, outside CI):
+    python3 -m venv .peers && .peers/bin/pip install tamaas numpy
+    cargo build --release -p stickslip-benches --example normal_probe
+    .peers/bin/python scripts/compare_tamaas_adhesion.py [--n 256] [--work 0.05] [--range 2e-6]
+"""
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from compare_tamaas import rough_surface  # noqa: E402
+
+
+def run_ours(binary, work_dir, gap, e, nu, w, h0, approach, tol):
+    n = gap.shape[0]
+    gfile = os.path.join(work_dir, "gap.f64")
+    gap.astype("<f8").tofile(gfile)
+    pfile = os.path.join(work_dir, "pressure.f64")
+    gout = os.path.join(work_dir, "gap_out.f64")
+    cmd = [binary, "rough", str(n), f"gap={gfile}", f"young={e}", f"poisson={nu}",
+           f"approach={approach}", f"adhesion={w},{h0}", f"tol={tol}",
+           f"pressure={pfile}", f"gapout={gout}"]
+    t0 = time.perf_counter()
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    secs = time.perf_counter() - t0
+    p = np.fromfile(pfile, dtype="<f8").reshape(n, n)
+    g = np.fromfile(gout, dtype="<f8").reshape(n, n)
+    return {"p": p, "gap": g, "seconds": secs, "log": out.strip()}
+
+
+def run_tamaas(h, size, e, nu, w, h0, mean_gap, tol, max_iter):
+    import tamaas as tm
+
+    n = h.shape[0]
+    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [size, size], [n, n])
+    model.E = e
+    model.nu = nu
+    solver = tm.BeckTeboulle(model, np.ascontiguousarray(h), tol, 1.0)
+    solver.max_iter = max_iter
+    adhesion = tm.MaugisAdhesionFunctional(np.ascontiguousarray(h))
+    adhesion.parameters = {"rho": h0, "surface_energy": w}
+    solver.addFunctionalTerm(adhesion)
+    t0 = time.perf_counter()
+    error = solver.solve(mean_gap)
+    secs = time.perf_counter() - t0
+    p = np.array(model.traction, dtype=float).reshape(n, n)
+    return {"p": p, "error": error, "seconds": secs, "version": tm.__version__}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--n", type=int, default=256)
+    ap.add_argument("--tol", type=float, default=1e-8)
+    ap.add_argument("--bin", default="target/release/examples/normal_probe")
+    ap.add_argument("--seed", type=int, default=7)
+    ap.add_argument("--young", type=float, default=1e6)
+    ap.add_argument("--poisson", type=float, default=0.5)
+    ap.add_argument("--work", type=float, default=0.05, help="w (J/m^2)")
+    ap.add_argument("--range", type=float, default=2e-6, help="h0 (m)")
+    ap.add_argument("--approach", type=float, default=-1.0e-6,
+                    help="approach from the first touch of the highest summit (m)")
+    ap.add_argument("--max-iter", type=int, default=5000)
+    args = ap.parse_args()
+    n, size = args.n, 1e-3
+    h = rough_surface(n, 0.8, 1e-6, k_low=2, k_high=n // 8, seed=args.seed)
+    gap = h.max() - h
+    work_dir = tempfile.mkdtemp(prefix="compare_tamaas_adhesion_")
+    ours = run_ours(os.path.abspath(args.bin), work_dir, gap, args.young, args.poisson,
+                    args.work, args.range, args.approach, args.tol)
+    # Our mean gap at the solution, the approach as tamaas poses it.
+    mean_gap = float(np.mean(ours["gap"]))
+    try:
+        tam = run_tamaas(h, size, args.young, args.poisson, args.work, args.range, mean_gap,
+                         args.tol, args.max_iter)
+    except ImportError:
+        print("tamaas is not installed: pip install tamaas (see the docstring)", file=sys.stderr)
+        print(ours["log"])
+        return 2
+    diff = np.linalg.norm(ours["p"] - tam["p"]) / np.linalg.norm(tam["p"])
+    print(f"periodic rough surface {n} x {n}, E {args.young:.3e} Pa, nu {args.poisson}, "
+          f"w {args.work} J/m^2, h0 {args.range:.3e} m, approach {args.approach:.3e} m "
+          f"(mean gap {mean_gap:.4e} m), tamaas {tam['version']}")
+    print(ours["log"])
+    print(f"{'':24}{'ours':>18}{'tamaas Maugis':>18}")
+    print(f"{'mean pressure (Pa)':24}{ours['p'].mean():>18.6e}{tam['p'].mean():>18.6e}")
+    print(f"{'contact fraction':24}{np.mean(ours['gap'] <= 0):>18.6f}{np.mean(tam['p'] > 0):>18.6f}")
+    print(f"{'zone fraction':24}{np.mean(ours['gap'] < args.range):>18.6f}{'':>18}")
+    print(f"{'solve time (s)':24}{ours['seconds']:>18.3f}{tam['seconds']:>18.3f}")
+    print(f"{'tamaas error':24}{'':>18}{tam['error']:>18.3e}")
+    print(f"pressure fields: ||p_ours - p_tamaas|| / ||p_tamaas|| = {diff:.3e}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
