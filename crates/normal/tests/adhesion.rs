@@ -365,3 +365,23 @@ fn rough_periodic_hysteresis() {
     // The most tensile force of the whole path is on the retraction.
     assert_eq!(pull_off(&sols), pull_off(&sols[m - 1..]));
 }
+
+/// The contact handed to the tangential solvers carries no adhesive tension: a contact cell
+/// whose total pressure is tensile (near the contact edge) enters with zero pressure, the
+/// others with their total pressure.
+#[test]
+fn contact_grid_without_tension() {
+    let sp = Sphere { r: 1e-3, w: 0.05, e_star: 1e6 / 0.75, lambda: 1.0 };
+    let (sols, _) = sphere_path(&sp, 64, 4.2, (0.2, 0.6, -0.5), (2, 6));
+    let s = sols.last().unwrap();
+    let tensile_contact =
+        (0..s.zone.len()).filter(|&k| s.normal.contact[k] && s.normal.pressure[k] < 0.0).count();
+    println!("contact cells {} of which tensile {tensile_contact}", s.normal.contact_cells);
+    assert!(tensile_contact > 0, "the case must have tensile contact cells");
+    let grid = s.normal.contact_grid().unwrap();
+    let expected: Vec<f64> = (0..s.zone.len())
+        .filter(|&k| s.normal.contact[k])
+        .map(|k| s.normal.pressure[k].max(0.0))
+        .collect();
+    assert_eq!(grid.pressure, expected);
+}

@@ -61,7 +61,8 @@ pub struct NormalSolution {
     pub hy: f64,
     /// Lattice corner $(x_0, y_0)$ (m).
     pub origin: (f64, f64),
-    /// Pressure per cell (Pa, compressive positive, $\ge 0$).
+    /// Pressure per cell (Pa, compressive positive; $\ge 0$ except in an adhesive solution,
+    /// [`NormalProblem::solve_adhesive`], where it is the total with the cohesive tension).
     pub pressure: Vec<f64>,
     /// Contact flag per cell ($p_k > 0$).
     pub contact: Vec<bool>,
@@ -108,9 +109,20 @@ impl NormalSolution {
     /// lattice, one patch) for the tangential solvers ([`stickslip_traction::GridProblem`],
     /// [`stickslip_traction::FastProblem`]).
     ///
+    /// The pressure is taken as compressive only: a tensile pressure (the adhesive traction
+    /// of [`NormalProblem::solve_adhesive`]) enters as zero, so that adhesive tension
+    /// carries no friction.
+    ///
     /// # Errors
     /// [`Error::Lattice`](crate::Error::Lattice) (an empty grid) when there is no contact.
     pub fn contact_grid(&self) -> Result<ContactGrid> {
+        let clipped: Vec<f64>;
+        let pressure = if self.pressure.iter().any(|&p| p < 0.0) {
+            clipped = self.pressure.iter().map(|&p| p.max(0.0)).collect();
+            &clipped
+        } else {
+            &self.pressure
+        };
         Ok(ContactGrid::from_mask(
             self.hx,
             self.hy,
@@ -118,7 +130,7 @@ impl NormalSolution {
             self.nx,
             self.ny,
             &self.contact,
-            &self.pressure,
+            pressure,
         )?)
     }
 
