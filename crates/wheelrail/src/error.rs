@@ -52,7 +52,7 @@ pub enum Error {
     },
     /// The wheel and the rail never come close: over their common lateral range the
     /// smallest vertical gap is `min_gap` at lateral position `y` (track coordinates, m).
-    #[error("the wheel and the rail never come close: the smallest vertical gap is {min_gap:e} m at y = {y:e} m (track coordinates){}", if *overlap { "" } else { "; the profiles do not even overlap laterally" })]
+    #[error("the wheel and the rail never come close: {}", if *overlap { format!("the smallest vertical gap is {min_gap:e} m at y = {y:e} m (track coordinates)") } else { "the profiles do not even overlap laterally (no vertical gap to measure)".to_string() })]
     NoContact {
         /// The smallest vertical gap over the common lateral range (m); infinite when the
         /// profiles do not overlap laterally.

@@ -218,7 +218,11 @@ fn profiles_that_never_meet_are_refused() {
         Tangential::None,
         &mut Cache::new(),
     ) {
-        Err(Error::NoContact { overlap: false, .. }) => {}
+        Err(e @ Error::NoContact { overlap: false, .. }) => {
+            // No gap is measured, so none is printed (it was "inf m").
+            let m = e.to_string();
+            assert!(m.contains("do not even overlap") && !m.contains("inf"), "{m}");
+        }
         other => panic!("expected no lateral overlap, got {other:?}"),
     }
     // The wheel profile 30 mm above its origin: it hovers over the rail.
