@@ -26,6 +26,7 @@
 // SceneError carries file, position, key and hint for the user; one per call.
 #![allow(clippy::result_large_err)]
 
+mod files;
 mod output;
 mod plots;
 mod report;

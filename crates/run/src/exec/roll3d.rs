@@ -84,25 +84,8 @@ pub(crate) fn solve(
     cx.iterations = sol.info.iterations;
     cx.inner_iterations = sol.info.products;
     cx.residual = sol.info.residual;
-    let v = step.speed;
-    let (nx, ny) = (lat.x.len(), lat.y.len());
-    let mut slip = [vec![vec![0.0; ny]; nx], vec![vec![0.0; ny]; nx]];
-    for k in 0..sol.x.len() {
-        if let Some((i, j)) = lat.index(sol.x[k], sol.y[k]) {
-            lat.qx[i][j] = -sol.qx[k];
-            lat.qy[i][j] = -sol.qy[k];
-            lat.stick[i][j] = i8::from(sol.stick[k]);
-            slip[0][i][j] = v * sol.sx[k];
-            slip[1][i][j] = v * sol.sy[k];
-        }
-    }
-    lat.slip = Some(slip);
-    let stick = sol.stick.iter().filter(|&&s| s).count();
-    let zones = GridZones {
-        stick,
-        slip: sol.stick.len() - stick,
-        stick_area_fraction: sol.stick_fraction(),
-    };
+    let zones = fill_lattice(lat, &sol, step.speed);
+    let stick = zones.stick;
     let capacity = r.friction * n.load;
     let ratio = sol.fx.hypot(sol.fy) / capacity;
     cx.notes.push(format!(
@@ -136,6 +119,26 @@ pub(crate) fn solve(
         rigid: RigidOut { tangential: None, rotation: None, per_body: None },
         zones: Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: Some(zones) },
     })
+}
+
+/// A rolling solution on the lattice: the traction on the substrate (minus body 1's), the
+/// stick flags and the micro-slip velocity `speed` times the slip; the zone counts. Shared
+/// by steady and transient rolling.
+pub(crate) fn fill_lattice(lat: &mut Lattice, sol: &RollingSolution, speed: f64) -> GridZones {
+    let (nx, ny) = (lat.x.len(), lat.y.len());
+    let mut slip = [vec![vec![0.0; ny]; nx], vec![vec![0.0; ny]; nx]];
+    for k in 0..sol.x.len() {
+        if let Some((i, j)) = lat.index(sol.x[k], sol.y[k]) {
+            lat.qx[i][j] = -sol.qx[k];
+            lat.qy[i][j] = -sol.qy[k];
+            lat.stick[i][j] = i8::from(sol.stick[k]);
+            slip[0][i][j] = speed * sol.sx[k];
+            slip[1][i][j] = speed * sol.sy[k];
+        }
+    }
+    lat.slip = Some(slip);
+    let stick = sol.stick.iter().filter(|&&s| s).count();
+    GridZones { stick, slip: sol.stick.len() - stick, stick_area_fraction: sol.stick_fraction() }
 }
 
 /// FASTSIM's and Polach's parameters come from Kalker's table: a contact outside it is

@@ -15,7 +15,7 @@ use stickslip_traction::{Error as TractionError, FastConfig, Tolerance};
 use super::friction::TangentialOut;
 use super::lattice::Lattice;
 use super::normal::ContactSolution;
-use super::outcome::{GridZones, HistoryOut, RigidOut, Zones};
+use super::outcome::{HistoryOut, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactRecipe, RollingStep, TransientRecipe};
 use stickslip_scene::eng::eng;
@@ -154,25 +154,7 @@ pub(crate) fn solve(
     // The final state on the lattice: the traction on the substrate (minus body 1's), the
     // stick flags and the micro-slip velocity V s of the last rolling step.
     let sol = problem.solution();
-    let v = step.speed;
-    let (nx, ny) = (lat.x.len(), lat.y.len());
-    let mut slip = [vec![vec![0.0; ny]; nx], vec![vec![0.0; ny]; nx]];
-    for k in 0..sol.x.len() {
-        if let Some((i, j)) = lat.index(sol.x[k], sol.y[k]) {
-            lat.qx[i][j] = -sol.qx[k];
-            lat.qy[i][j] = -sol.qy[k];
-            lat.stick[i][j] = i8::from(sol.stick[k]);
-            slip[0][i][j] = v * sol.sx[k];
-            slip[1][i][j] = v * sol.sy[k];
-        }
-    }
-    lat.slip = Some(slip);
-    let stick = sol.stick.iter().filter(|&&s| s).count();
-    let zones = GridZones {
-        stick,
-        slip: sol.stick.len() - stick,
-        stick_area_fraction: sol.stick_fraction(),
-    };
+    let zones = super::roll3d::fill_lattice(lat, &sol, step.speed);
     let last = hist.creepage_longitudinal.len() - 1;
     cx.notes.push(format!(
         "transient rolling on {} elements: {} steps ({}{} rolled in steps of {}), {} Newton steps, {} FFT products, largest residual {:.2e}; final creepages xi = {}, eta = {} under Fx = {}, Fy = {}; energy dissipated {}",
