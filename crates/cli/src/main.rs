@@ -370,6 +370,16 @@ fn cmd_run(
     if let Some(a) = c.area {
         let _ = writeln!(t, "  contact area: {}", eng(a, "m²"));
     }
+    if let (Some(p), Some(reached)) = (c.pull_off, c.pull_off_reached) {
+        if reached {
+            let _ = writeln!(t, "  pull-off: {}", eng(p, fu));
+        } else {
+            let _ = writeln!(t, "  pull-off: not reached (most tensile force {})", eng(p, fu));
+        }
+    }
+    if let Some(lc) = &outcome.load_curve {
+        let _ = writeln!(t, "  load curve: {} points (load_curve in result.json)", lc.normal.len());
+    }
     let fo = &outcome.forces;
     if let (Some(fx), Some(fy), Some(mz)) = (fo.fx, fo.fy, fo.mz) {
         let _ = writeln!(

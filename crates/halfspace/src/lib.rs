@@ -2,6 +2,8 @@
 //!
 //! What is here:
 //!
+//! - [`adhesion`]: Maugis's solution for a sphere with a Dugdale cohesive zone, between the
+//!   JKR and DMT theories (Maugis 1992).
 //! - [`material`]: Young's modulus and Poisson ratio, validated; composite modulus
 //!   $1/E^* = \sum_i (1-\nu_i^2)/E_i$ and the two-body combinations of FORMULAS.md E and F.
 //! - [`flamant`]: the line load on a half-plane (plane strain): stresses and surface
@@ -51,6 +53,7 @@
 //! The formulas were checked against the corrected specification `FORMULAS.md` (sections named
 //! in each item's documentation); that file is right where a seed paper disagrees.
 
+pub mod adhesion;
 pub mod cattaneo2d;
 pub mod error;
 pub mod flamant;

@@ -587,6 +587,7 @@ fn contact_recipe(
                 NormalLoad::Force(p) | NormalLoad::FromPatches(p) => SurfaceLoad::Force(p),
             };
             checks::periodic_surface(scene)?;
+            checks::adhesion(scene, s, e_star)?;
             let tolerance =
                 tolerance_for(scene, "the normal-contact solver", NormalProblem::TOLERANCE_RANGE)?;
             ContactNormal::Surface {
@@ -595,6 +596,8 @@ fn contact_recipe(
                 tolerance,
                 sweep: l.normal_sweep,
                 hardness: scene.interface.hardness,
+                approaches: l.approach_path.as_ref().map(stickslip_scene::ApproachPath::approaches),
+                adhesion: scene.interface.adhesion,
             }
         }
     };

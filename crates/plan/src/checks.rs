@@ -572,7 +572,18 @@ pub(crate) fn magnitudes(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
         Curved { ratio: f64, what: String },
         Flat { ratio: f64, what: String },
     }
-    let m = match (&scene.geometry, scene.load.normal) {
+    // An approach path is measured at its deepest corner; one that never presses (an
+    // adhesive contact held apart) has no contact size to check.
+    let normal = match &scene.load.approach_path {
+        Some(p) => {
+            NormalLoad::Approach(p.corners.iter().copied().fold(f64::NEG_INFINITY, f64::max))
+        }
+        None => scene.load.normal,
+    };
+    if matches!(normal, NormalLoad::Approach(d) if d <= 0.0) {
+        return Ok(());
+    }
+    let m = match (&scene.geometry, normal) {
         (Geometry::Cylinder { radius }, NormalLoad::HalfWidth(a)) => Some(Measure::Curved {
             ratio: a / radius,
             what: format!("a/R with R = {}", eng(radius.abs(), "m")),
@@ -707,4 +718,84 @@ pub(crate) fn magnitudes(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
         ),
         format!("change the load, the radius or the moduli to bring it inside: {why}"),
     ))
+}
+
+/// Adhesion on a surface (`interface.adhesion`): the adhesive stress $w/h_0$ within linear
+/// elasticity (at most 0.1 E*, as a contact pressure); the range resolved by the lattice
+/// (no step of the initial gap between neighbouring cells within reach of the range larger
+/// than the range: a zone narrower than a cell does not let go, and the pull-off would be
+/// the lattice's); friction stages are not posed on an adhesive contact in this version.
+pub(crate) fn adhesion(
+    scene: &Scene,
+    s: &stickslip_scene::Surface,
+    e_star: f64,
+) -> Result<(), Issue> {
+    let Some(a) = scene.interface.adhesion else { return Ok(()) };
+    let s0 = a.work / a.range;
+    let hi = stickslip_scene::ranges::PRESSURE_OVER_MODULUS.1;
+    if s0 > hi * e_star {
+        return Err(issue(
+            ErrorKind::OutOfRange,
+            "interface.adhesion",
+            format!(
+                "the adhesive stress w/h0 = {} is {:.3} E* (E* = {}), above the {hi} of linear elasticity",
+                eng(s0, "Pa"),
+                s0 / e_star,
+                eng(e_star, "Pa")
+            ),
+            format!("a longer range or a smaller work: w/h0 at most {}", eng(hi * e_star, "Pa")),
+        ));
+    }
+    let l = &scene.load;
+    if l.tangential != 0.0
+        || l.moment != 0.0
+        || l.sliding
+        || !matches!(scene.motion, Motion::Static)
+        || scene.outputs.cycle.is_some()
+        || scene.outputs.field.is_some()
+    {
+        return Err(unsupported(
+            "interface.adhesion",
+            "friction on an adhesive contact (a tangential load, a moment, sliding, rolling or a cycle) and the subsurface field under it are not posed by scenes in this version",
+            "remove the tangential load, moment, sliding, motion, outputs.cycle and outputs.field (the adhesive normal contact and its load curve are solved)",
+        ));
+    }
+    let deepest = match (&l.approach_path, l.normal) {
+        (Some(p), _) => p.corners.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        (None, NormalLoad::Approach(d)) => d,
+        _ => return Ok(()),
+    };
+    let [nx, ny] = s.cells;
+    let gap = s.initial_gap();
+    let step = stickslip_scene::HeightStep::of(
+        &gap,
+        nx,
+        ny,
+        s.boundary == SurfaceBoundary::Periodic,
+        deepest,
+        a.range,
+    );
+    if step.step > a.range {
+        let f = step.step / a.range;
+        let need = |n: usize| ((n as f64 * f).ceil() as usize).next_power_of_two();
+        return Err(issue(
+            ErrorKind::OutOfRange,
+            "interface.adhesion.range",
+            format!(
+                "the range {} is shorter than the step of the initial gap between neighbouring cells where the surfaces come within range ({} at cell ({}, {}), {} cells within reach at the deepest approach {}): the cohesive zone would be narrower than a cell, and the contact would not let go where the continuum lets go",
+                eng(a.range, "m"),
+                eng(step.step, "m"),
+                step.cell.0,
+                step.cell.1,
+                step.cells_in_reach,
+                eng(deepest, "m")
+            ),
+            format!(
+                "a lattice of at least {} x {} cells over the same size (geometry.cells; for a smooth profile the step falls with the cell), a smaller geometry.size, or a longer range",
+                need(nx),
+                need(ny)
+            ),
+        ));
+    }
+    Ok(())
 }

@@ -112,7 +112,12 @@ pub(crate) fn estimate(
         // 4096^2 (rough periodic and free Hertz alike, docs/peers.md), growing as cells^1.05
         // to 1.1; taken a third higher for a shared machine and tighter tolerances.
         let n = (s.cells[0] * s.cells[1]) as f64;
-        secs += 0.04 * (n / 65536.0).powf(1.1);
+        // An approach path solves every point, warm from the one before; an adhesive solve
+        // is a few contact solves over its cohesive zone (measured 1.1 to 2.4 times an
+        // elastic one, docs/peers.md; taken as 3).
+        let points = scene.load.approach_path.as_ref().map_or(1, |p| p.approaches().len());
+        let per = if scene.interface.adhesion.is_some() { 3.0 } else { 1.0 };
+        secs += points as f64 * per * 0.04 * (n / 65536.0).powf(1.1);
         // The solver's own estimate of its working memory, and the initial gap.
         let boundary = match s.boundary {
             stickslip_scene::SurfaceBoundary::Free => stickslip_normal::Boundary::Free,

@@ -364,6 +364,11 @@ pub enum ContactNormal {
         sweep: Option<stickslip_scene::NormalSweep>,
         /// The hardness capping the pressure (`interface.hardness`, Pa), if any.
         hardness: Option<f64>,
+        /// An approach path (`load.approach = [from, to, steps]`): the approach of every
+        /// point (m), each solved from the one before; the last is the scene's load.
+        approaches: Option<Vec<f64>>,
+        /// Maugis–Dugdale adhesion (`interface.adhesion`), if any: solved under the approach.
+        adhesion: Option<stickslip_scene::AdhesionKeys>,
     },
 }
 

@@ -218,13 +218,18 @@ pub(crate) fn render(
         files.push(("history.csv".to_string(), std::mem::take(&mut s)));
     }
     if let Some(c) = &out.load_curve {
-        s.push_str("normal_N,approach_m,area_m2,fraction,p0_Pa,iterations\n");
+        s.push_str("normal_N,approach_m,area_m2,fraction,p0_Pa,iterations");
+        s.push_str(if c.zone_area.is_some() { ",zone_area_m2\n" } else { "\n" });
         for i in 0..c.normal.len() {
-            let _ = writeln!(
+            let _ = write!(
                 s,
                 "{},{},{},{},{},{}",
                 c.normal[i], c.approach[i], c.area[i], c.fraction[i], c.p0[i], c.iterations[i]
             );
+            let _ = match &c.zone_area {
+                Some(z) => writeln!(s, ",{}", z[i]),
+                None => writeln!(s),
+            };
         }
         files.push(("load_curve.csv".to_string(), std::mem::take(&mut s)));
     }

@@ -148,6 +148,16 @@ fn results(s: &mut String, out: &Outcome, ctx: Option<ReportContext<'_>>) {
     if let Some(fr) = c.fraction {
         row(s, "contact fraction", &format!("{fr:.4}"));
     }
+    if let Some(fr) = c.plastic_fraction {
+        row(s, "plastic fraction of the contact", &format!("{fr:.4}"));
+    }
+    if let (Some(p), Some(reached)) = (c.pull_off, c.pull_off_reached) {
+        if reached {
+            row(s, "pull-off", &eng(p, f));
+        } else {
+            row(s, "pull-off", &format!("not reached (most tensile force {})", eng(p, f)));
+        }
+    }
     let fo = &out.forces;
     row(s, "normal force", &eng(fo.normal, f));
     row(s, "tangential force", &near(fo.tangential, fs, f));

@@ -61,9 +61,10 @@ pub use stickslip_plan as plan;
 
 pub use exec::outcome::{
     Audit, Check, ContactOut, CycleOut, EffectsOut, Evaluations, Field, FieldArrays, FieldMax,
-    FieldOut, FieldPeak, Forces, GridZones, HistoryLoopOut, HistoryOut, NormalSolverOut, Outcome,
-    PatchMaps, Progress, RigidOut, RollingOut, RuizMaxOut, RunOptions, SolverOut, SurfaceOut,
-    TrackForce, VolumeField, WheelRailOut, WheelRailPatchOut, Zones, INLINE_FIELD_POINTS,
+    FieldOut, FieldPeak, Forces, GridZones, HistoryLoopOut, HistoryOut, LoadCurve, NormalSolverOut,
+    Outcome, PatchMaps, Progress, RigidOut, RollingOut, RuizMaxOut, RunOptions, SolverOut,
+    SurfaceOut, TrackForce, VolumeField, WheelRailOut, WheelRailPatchOut, Zones,
+    INLINE_FIELD_POINTS,
 };
 pub use exec::{execute, Execute};
 pub use stickslip_plan::recipe::Recipe;

@@ -44,6 +44,10 @@ pub struct References {
     /// swings between $-T^*$ and $T^*$: Mindlin's first loading from zero to $T^*$ and the
     /// Mindlin–Deresiewicz loop (relative displacement, T).
     pub history_loop: Option<(Vec<f64>, Vec<f64>)>,
+    /// The load curve of a sphere profile on a lattice (a load sweep or an approach path):
+    /// its label ("Hertz", or "Maugis" under adhesion) and (approach, force) over the
+    /// approaches the curve spans.
+    pub load_curve: Option<(&'static str, Vec<f64>, Vec<f64>)>,
 }
 
 fn reference(label: &'static str, at: impl Fn(f64, f64) -> f64 + 'static) -> Option<Reference> {
@@ -78,6 +82,7 @@ pub fn of(plan: &Plan, out: &Outcome) -> References {
                 traction,
                 cycle: None,
                 history_loop: None,
+                load_curve: None,
             }
         }
         Recipe::Rolling(r) => match r.model {
@@ -89,6 +94,7 @@ pub fn of(plan: &Plan, out: &Outcome) -> References {
                     traction: reference("Carter", move |x, _| s2.shear(x)),
                     cycle: None,
                     history_loop: None,
+                    load_curve: None,
                 }
             }
             RollingModel::Goryacheva { .. } => References::default(),
@@ -145,9 +151,47 @@ fn contact(r: &ContactRecipe, out: &Outcome) -> References {
         ContactNormal::EllipseGiven { a, b, force } => {
             refs.traction = cattaneo(r, a, b, force);
         }
+        ContactNormal::Surface { ref surface, adhesion, .. } => {
+            refs.load_curve = sphere_curve(surface, adhesion, r.bodies.e_star, out);
+        }
         _ => {}
     }
     refs
+}
+
+/// The closed-form load curve of a smooth sphere profile on a free lattice over the
+/// approaches of `out.load_curve`: Hertz's $P = \tfrac43E^*\sqrt R\,\delta^{3/2}$, or under
+/// adhesion Maugis's curve (stickslip-halfspace `adhesion`) from the large contact to the
+/// vanishing one.
+fn sphere_curve(
+    s: &stickslip_scene::Surface,
+    adhesion: Option<stickslip_scene::AdhesionKeys>,
+    e_star: f64,
+    out: &Outcome,
+) -> Option<(&'static str, Vec<f64>, Vec<f64>)> {
+    let stickslip_scene::Profile::Sphere { radius } = s.profile else { return None };
+    if s.roughness.is_some() || s.boundary != stickslip_scene::SurfaceBoundary::Free {
+        return None;
+    }
+    let c = out.load_curve.as_ref()?;
+    let lo = c.approach.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = c.approach.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    if let Some(a) = adhesion {
+        let m = stickslip_halfspace::adhesion::MaugisSphere::new(radius, a.work, a.range, e_star)
+            .ok()?;
+        let (d, p): (Vec<f64>, Vec<f64>) = m
+            .curve(2000)
+            .into_iter()
+            .filter(|q| q.approach >= lo && q.approach <= hi)
+            .map(|q| (q.approach, q.force))
+            .unzip();
+        return (d.len() > 1).then_some(("Maugis", d, p));
+    }
+    let lo = lo.max(0.0);
+    let n = 200;
+    let d: Vec<f64> = (0..=n).map(|i| lo + (hi - lo) * i as f64 / n as f64).collect();
+    let p = d.iter().map(|&d| 4.0 / 3.0 * e_star * radius.sqrt() * d.powf(1.5)).collect();
+    (hi > lo).then_some(("Hertz", d, p))
 }
 
 /// Cattaneo's traction magnitude on the Hertz ellipse of semi-axes `ax`, `ay` under the

@@ -476,6 +476,23 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
             assert!(t.value > 0.0 && t.x < -0.8 * c.a && t.x > -1.2 * c.a, "{t:?}");
             assert!(out.audit.passed);
         }
+        "adhesive_sphere.toml" => {
+            // Maugis's closed form (stickslip-halfspace, the dimensionless Maugis-Dugdale
+            // equations) against the lattice's approach path: the pull-off within 3 % (the
+            // path samples the curve every 1 nm), passed and let go; the approach and the
+            // retraction meet at the turning corner.
+            let m = stickslip_halfspace::adhesion::MaugisSphere::new(1e-6, 0.05, 2e-9, 1e9 / 0.75)
+                .unwrap();
+            assert_eq!(out.contact.pull_off_reached, Some(true));
+            expect("pull-off vs Maugis", out.contact.pull_off.unwrap(), m.pull_off().force, 0.03);
+            let c = out.load_curve.as_ref().unwrap();
+            assert_eq!(c.normal.len(), 41);
+            expect("deepest approach", c.approach[20], 16e-9, 1e-12);
+            let e = m.force_at_approach(16e-9).unwrap();
+            expect("force at 16 nm vs Maugis", c.normal[20], e, 0.01);
+            assert_eq!(out.contact.area, Some(0.0), "let go at -4 nm");
+            assert!(out.audit.passed);
+        }
         "sphere_as_surface.toml" => {
             // The normal solve on the lattice against Hertz (a within one cell, p0 1 %,
             // approach 0.5 %), then the fast solver's partial slip on that contact.

@@ -64,10 +64,10 @@ pub mod units;
 pub use error::{Check, ErrorKind, Issue, SceneError};
 pub use scene::ranges;
 pub use scene::{
-    patch_bounds, Cycle, Elastic, Ellipse, FieldGrid, FieldScale, Geometry, History,
-    HistoryControl, Indenter, Interface, Load, Method, Motion, NormalLoad, NormalSweep, Outputs,
-    Patch, PatchShape, PathSource, Profile, ProfileFile, RailSide, Scene, SceneBuilder,
-    SolverOptions, Source, Substrate, Surface, SurfaceBoundary, Transient, TransientStart,
-    WheelRail, WheelsetPosition, DEFAULT_SCENE, MAX_GRID,
+    patch_bounds, AdhesionKeys, ApproachPath, Cycle, Elastic, Ellipse, FieldGrid, FieldScale,
+    Geometry, HeightStep, History, HistoryControl, Indenter, Interface, Load, Method, Motion,
+    NormalLoad, NormalSweep, Outputs, Patch, PatchShape, PathSource, Profile, ProfileFile,
+    RailSide, Scene, SceneBuilder, SolverOptions, Source, Substrate, Surface, SurfaceBoundary,
+    Transient, TransientStart, WheelRail, WheelsetPosition, DEFAULT_SCENE, MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};

@@ -72,7 +72,7 @@ pub(crate) struct RawScene {
     pub outputs: Option<RawOutputs>,
     /// How to solve; the planner chooses when absent.
     pub solver: Option<RawSolver>,
-    /// The interface beyond elastic contact (a hardness cap); elastic when absent.
+    /// The interface beyond elastic contact (a hardness cap, adhesion); elastic when absent.
     pub interface: Option<RawInterface>,
 }
 
@@ -83,6 +83,22 @@ pub(crate) struct RawInterface {
     /// lattices only).
     #[schemars(with = "Option<Qty>")]
     pub hardness: Option<SQty>,
+    /// Maugis–Dugdale adhesion: `{ work = "50 mJ/m^2", range = "10 nm" }` (surface lattices
+    /// under an approach, `load.approach`).
+    #[schemars(with = "Option<RawAdhesion>")]
+    pub adhesion: Option<Spanned<RawAdhesion>>,
+}
+
+/// `interface.adhesion`: the work of adhesion and the range of the attraction.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawAdhesion {
+    /// The work of adhesion w (energy per area, e.g. "50 mJ/m^2").
+    #[schemars(with = "Option<Qty>")]
+    pub work: Option<SQty>,
+    /// The range h0 over which the constant attraction w/h0 acts (length, e.g. "10 nm").
+    #[schemars(with = "Option<Qty>")]
+    pub range: Option<SQty>,
 }
 
 #[derive(Debug, Deserialize, JsonSchema)]
@@ -321,9 +337,11 @@ pub(crate) struct RawLoad {
     /// Instead of normal: the contact half-width (length).
     #[schemars(with = "Option<Qty>")]
     pub half_width: Option<SQty>,
-    /// Surface, instead of normal: the approach of the bodies (length).
-    #[schemars(with = "Option<Qty>")]
-    pub approach: Option<SQty>,
+    /// Surface, instead of normal: the approach of the bodies (length), or an approach path
+    /// `[from, to, steps]` in equal steps (any sign; more corners before `steps` make a path
+    /// that turns, e.g. ["-20 nm", "100 nm", "-20 nm", 60]).
+    #[schemars(with = "Option<RawNormal>")]
+    pub approach: Option<Spanned<RawNormal>>,
     /// The tangential force (N/m in 2D, N in 3D).
     #[schemars(with = "Option<Qty>")]
     pub tangential: Option<SQty>,

@@ -4,6 +4,7 @@
 use plotters::prelude::*;
 
 mod contour;
+mod load_curve;
 mod maps;
 mod parameters;
 mod raster;
@@ -635,6 +636,9 @@ pub(crate) fn render(out: &Outcome, plan: Option<&Plan>) -> Result<Vec<(String, 
                 &[],
             )?,
         ));
+    }
+    if let Some(c) = &out.load_curve {
+        load_curve::render(c, refs.load_curve.as_ref(), &out.contact, st, sub, &mut files)?;
     }
     if let Some(w) = &out.wheel_rail {
         wheel_rail::render(w, st, sub, &mut files)?;

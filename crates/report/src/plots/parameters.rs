@@ -40,6 +40,21 @@ pub(crate) fn key_parameters(plan: Option<&Plan>, out: &Outcome) -> String {
                 ContactNormal::EllipseGiven { a, b, .. } => {
                     parts.push(format!("a = {}, b = {}", eng(a, "m"), eng(b, "m")));
                 }
+                ContactNormal::Surface { ref surface, adhesion, hardness, .. } => {
+                    if let stickslip_scene::Profile::Sphere { radius } = surface.profile {
+                        parts.push(format!("R = {}", eng(radius, "m")));
+                    }
+                    if let Some(a) = adhesion {
+                        parts.push(format!(
+                            "w = {}, h0 = {}",
+                            eng(a.work, "J/m^2"),
+                            eng(a.range, "m")
+                        ));
+                    }
+                    if let Some(h) = hardness {
+                        parts.push(format!("H = {}", eng(h, "Pa")));
+                    }
+                }
                 _ => {}
             }
             friction = (r.friction > 0.0).then_some(r.friction);

@@ -115,19 +115,38 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
     let c = &out.contact;
     let two_d = matches!(plan.recipe, Recipe::Line(_) | Recipe::Rolling(_));
     let length = if two_d { c.a + c.b } else { c.a.min(c.b) };
-    b.above(
-        "positive sizes",
-        length.min(c.b).min(c.p0).min(c.normal_load),
-        0.0,
-        if two_d {
-            "the smallest of the contact length a + b, b, p0 and the normal load (a may be negative in rolling: the trailing edge ahead of the axis)"
-        } else {
-            "the smallest of the semi-axes, p0 and the normal load"
-        },
+    // An adhesive contact may pull (a negative load) and may have let go (no contact).
+    let adhesive = matches!(
+        &plan.recipe,
+        Recipe::Contact(ContactRecipe {
+            normal: crate::plan::recipe::ContactNormal::Surface { adhesion: Some(_), .. },
+            ..
+        })
     );
+    if adhesive {
+        b.at_most(
+            "sizes",
+            -c.a.min(c.b),
+            0.0,
+            "the extents of the contact are not negative (an adhesive contact may pull, and may have let go)",
+        );
+    } else {
+        b.above(
+            "positive sizes",
+            length.min(c.b).min(c.p0).min(c.normal_load),
+            0.0,
+            if two_d {
+                "the smallest of the contact length a + b, b, p0 and the normal load (a may be negative in rolling: the trailing edge ahead of the axis)"
+            } else {
+                "the smallest of the semi-axes, p0 and the normal load"
+            },
+        );
+    }
     let f = friction_of(plan);
     let (coulomb_limit, residual_limit) = limits(plan);
     let scale = if f > 0.0 { f * c.p0 } else { c.p0 };
+    // An adhesive contact that has let go has no compressive peak.
+    let scale = if adhesive { scale.abs().max(f64::MIN_POSITIVE) } else { scale };
     if let Recipe::Contact(ContactRecipe {
         normal: crate::plan::recipe::ContactNormal::Surface { hardness: Some(h), .. },
         ..
@@ -157,14 +176,17 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
         SurfaceOut::Grid { x, y, p, qx, qy, stick, .. } if !x.is_empty() => {
             let (mut worst, mut stick_outside) = (f64::NEG_INFINITY, 0usize);
             let (mut sp, mut sx, mut sy, mut spx, mut spy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+            let mut sabs = 0.0;
             for i in 0..x.len() {
                 for j in 0..y.len() {
                     let q = qx[i][j].hypot(qy[i][j]);
-                    worst = worst.max((q - f * p[i][j]) / scale);
+                    // Tension (adhesion) carries no friction.
+                    worst = worst.max((q - f * p[i][j].max(0.0)) / scale);
                     if stick[i][j] == 1 && p[i][j] <= 0.0 {
                         stick_outside += 1;
                     }
                     sp += p[i][j];
+                    sabs += p[i][j].abs();
                     spx += p[i][j] * x[i];
                     spy += p[i][j] * y[j];
                     sx += qx[i][j];
@@ -186,12 +208,26 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
                 0.0,
                 "stick cells without pressure",
             );
-            let normal_error = (sp * area - c.normal_load).abs() / c.normal_load;
+            let normal_error = if adhesive {
+                // (0 when the bodies have let go entirely: no pressure, no load)
+                let d = c.normal_load.abs().max(sabs * area);
+                if d > 0.0 {
+                    (sp * area - c.normal_load).abs() / d
+                } else {
+                    (sp * area - c.normal_load).abs()
+                }
+            } else {
+                (sp * area - c.normal_load).abs() / c.normal_load
+            };
             b.at_most(
                 "normal resultant",
                 normal_error,
                 LATTICE_AREA_TOLERANCE,
-                "|lattice normal force - P| / P",
+                if adhesive {
+                    "|lattice normal force - P| / max(|P|, lattice sum of |p| dA)"
+                } else {
+                    "|lattice normal force - P| / P"
+                },
             );
             let distribution = !matches!(
                 plan.recipe,

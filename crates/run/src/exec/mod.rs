@@ -17,6 +17,7 @@
 // Scene errors carry file, position, key and hint; they are built on cold paths.
 #![allow(clippy::result_large_err)]
 
+mod adhesion;
 mod audit;
 mod coupled;
 mod cycle;
@@ -276,6 +277,8 @@ fn line(r: &crate::plan::recipe::LineRecipe, cx: &mut Ctx<'_>) -> Result<Parts, 
             area: None,
             fraction: None,
             plastic_fraction: None,
+            pull_off: None,
+            pull_off_reached: None,
         },
         zones: t.zones(n.a, r.friction.is_some(), n.friction_possible),
         forces: Forces {
@@ -373,6 +376,8 @@ fn contact_parts(
                 .surface
                 .as_ref()
                 .and_then(|s| s.plastic.as_ref().map(|p| p.fraction)),
+            pull_off: n.surface.as_ref().and_then(|s| s.adhesion.map(|a| a.pull_off)),
+            pull_off_reached: n.surface.as_ref().and_then(|s| s.adhesion.map(|a| a.reached)),
         },
         zones: t.zones,
         forces: Forces {

@@ -155,6 +155,8 @@ pub(crate) struct SurfaceContact {
     pub plastic: Option<Plastic>,
     /// The load sweep's curves, when the scene asks for one.
     pub curve: Option<LoadCurve>,
+    /// Under adhesion: the pull-off along the approach path.
+    pub adhesion: Option<super::adhesion::PullOff>,
 }
 
 /// The normal contact of a 3D recipe, and the lattice of `r.grid` elements per side.
@@ -162,8 +164,22 @@ pub(crate) fn contact(r: &ContactRecipe, cx: &mut Ctx<'_>) -> Result<ContactSolu
     let n = r.grid;
     // (semi-axes, peak pressure, load, approach) and the grid with its lattice corner and size
     let ((ax, ay, p0, load, indentation), (grid, x0, y0, nx, ny)) = match &r.normal {
-        ContactNormal::Surface { surface, load, tolerance, sweep, hardness } => {
-            return surface_contact(surface, *load, *tolerance, *sweep, *hardness, r, cx);
+        ContactNormal::Surface {
+            surface,
+            load,
+            tolerance,
+            sweep,
+            hardness,
+            approaches,
+            adhesion,
+        } => {
+            let path = SurfacePath {
+                sweep: *sweep,
+                approaches: approaches.as_deref(),
+                hardness: *hardness,
+                adhesion: *adhesion,
+            };
+            return surface_contact(surface, *load, *tolerance, &path, r, cx);
         }
         ContactNormal::Sphere { radius, force, e_star } => {
             let h = HertzSphere::new(*force, *radius, *e_star)
@@ -219,14 +235,22 @@ pub(crate) fn contact(r: &ContactRecipe, cx: &mut Ctx<'_>) -> Result<ContactSolu
     Ok(ContactSolution { ax, ay, p0, load, indentation, grid, lattice: lat, surface: None })
 }
 
+/// How a surface is loaded beyond one force or approach: a load sweep, an approach path,
+/// a hardness cap, adhesion.
+pub(crate) struct SurfacePath<'a> {
+    pub sweep: Option<NormalSweep>,
+    pub approaches: Option<&'a [f64]>,
+    pub hardness: Option<f64>,
+    pub adhesion: Option<stickslip_scene::AdhesionKeys>,
+}
+
 /// The normal contact of a surface: its initial gap (profile plus roughness) on the lattice,
 /// solved by the normal-contact solver under force or displacement control.
 fn surface_contact(
     s: &stickslip_scene::Surface,
     load: SurfaceLoad,
     tolerance: f64,
-    sweep: Option<NormalSweep>,
-    hardness: Option<f64>,
+    path: &SurfacePath<'_>,
     r: &ContactRecipe,
     cx: &mut Ctx<'_>,
 ) -> Result<ContactSolution, SceneError> {
@@ -241,30 +265,32 @@ fn surface_contact(
     let mut problem = NormalProblem::new(nx, ny, (hx, hy), &gap, r.bodies.pair(), boundary)
         .map_err(surface_err)?
         .with_tolerance(tol);
-    if let Some(h) = hardness {
+    if let Some(h) = path.hardness {
         problem = problem.with_hardness(h);
     }
     let last = match load {
         SurfaceLoad::Force(p) => TNormalLoad::Force(p),
         SurfaceLoad::Approach(d) => TNormalLoad::Approach(d),
     };
-    // A load sweep: each step warm-started from the one before; the last is the scene's
-    // load and goes on to the later stages.
-    let steps: Vec<TNormalLoad> = match (sweep, load) {
-        (Some(sw), SurfaceLoad::Force(p)) => {
+    if let Some(a) = path.adhesion {
+        let SurfaceLoad::Approach(d) = load else {
+            return Err(solver_err("adhesive contact", "adhesion is solved under an approach"));
+        };
+        let approaches = path.approaches.map_or_else(|| vec![d], <[f64]>::to_vec);
+        return super::adhesion::path(s, &problem, &approaches, a, r.bodies.e_star, cx);
+    }
+    // A load sweep or an approach path: each step warm-started from the one before; the
+    // last is the scene's load and goes on to the later stages.
+    let steps: Vec<TNormalLoad> = match (path.sweep, path.approaches, load) {
+        (_, Some(ds), _) => ds.iter().map(|&d| TNormalLoad::Approach(d)).collect(),
+        (Some(sw), None, SurfaceLoad::Force(p)) => {
             sw.forces(p).into_iter().map(TNormalLoad::Force).collect()
         }
         _ => vec![last],
     };
+    let sweep = path.sweep.is_some() || path.approaches.is_some();
     let op = problem.operator();
-    let mut curve = sweep.map(|_| LoadCurve {
-        normal: Vec::new(),
-        approach: Vec::new(),
-        area: Vec::new(),
-        fraction: Vec::new(),
-        p0: Vec::new(),
-        iterations: Vec::new(),
-    });
+    let mut curve = sweep.then(LoadCurve::default);
     let mut warm: Option<Vec<f64>> = None;
     let mut sol = None;
     let mut seconds = 0.0;
@@ -280,7 +306,8 @@ fn surface_contact(
             c.p0.push(s.peak_pressure);
             c.iterations.push(s.info.iterations);
         }
-        warm = Some(s.pressure.clone());
+        // A step without contact (an approach path above the surface) starts the next cold.
+        warm = s.pressure.iter().any(|&p| p > 0.0).then(|| s.pressure.clone());
         sol = Some(s);
     }
     cx.progress("normal contact", steps.len(), steps.len());
@@ -303,18 +330,7 @@ fn surface_contact(
 /// The initial gap of a surface on its lattice (profile minus roughness at the cell centres,
 /// row-major `j * nx + i`; the lattice is centred on the origin).
 pub(crate) fn surface_gap(s: &stickslip_scene::Surface) -> Vec<f64> {
-    let [nx, ny] = s.cells;
-    let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
-    let (x0, y0) = (-0.5 * s.size[0], -0.5 * s.size[1]);
-    let mut gap = Vec::with_capacity(nx * ny);
-    for j in 0..ny {
-        for i in 0..nx {
-            let (x, y) = (x0 + (i as f64 + 0.5) * hx, y0 + (j as f64 + 0.5) * hy);
-            let h = s.roughness.as_ref().map_or(0.0, |h| h[j * nx + i]);
-            gap.push(s.profile.gap(x, y) - h);
-        }
-    }
-    gap
+    s.initial_gap()
 }
 
 /// The sharp punch against Boussinesq (`PunchOut`): the force at the area-equivalent radius
@@ -485,6 +501,7 @@ pub(crate) fn surface_solution(
             fraction: sol.fraction,
             gap: gaps,
             curve,
+            adhesion: None,
             plastic: sol.hardness.map(|_| {
                 let map = |v: &dyn Fn(usize) -> f64| -> Vec<Vec<f64>> {
                     (0..nx).map(|i| (0..ny).map(|j| v(j * nx + i)).collect()).collect()

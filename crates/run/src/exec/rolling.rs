@@ -123,6 +123,8 @@ pub(crate) fn run(r: &RollingRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneErr
             area: None,
             fraction: None,
             plastic_fraction: None,
+            pull_off: None,
+            pull_off_reached: None,
         },
         zones,
         forces: Forces {

@@ -207,6 +207,8 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
             area: Some(area),
             fraction: None,
             plastic_fraction: None,
+            pull_off: None,
+            pull_off_reached: None,
         },
         zones: Zones { stick: vec![], slip: vec![], coordinate: "grid", grid: None },
         forces: Forces {

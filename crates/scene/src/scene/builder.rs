@@ -51,6 +51,7 @@ impl SceneBuilder {
                     sliding: false,
                     moment: 0.0,
                     normal_sweep: None,
+                    approach_path: None,
                     history: None,
                 },
                 motion: Motion::Static,

@@ -13,12 +13,14 @@ use std::path::{Path, PathBuf};
 
 mod builder;
 mod heights;
+mod interface;
 mod path_file;
 pub mod ranges;
 pub(crate) mod read;
 pub(crate) mod validate;
 
 pub use builder::SceneBuilder;
+pub use interface::{AdhesionKeys, ApproachPath, HeightStep, Interface};
 
 use crate::error::{ErrorKind, Issue, SceneError};
 
@@ -440,6 +442,9 @@ pub struct Load {
     pub moment: f64,
     /// A load sweep up to `normal` (a surface only): the area–load and approach–load curves.
     pub normal_sweep: Option<NormalSweep>,
+    /// An approach path (`load.approach = [from, to, steps]`, a surface only); the load is
+    /// then `NormalLoad::Approach` of its last corner.
+    pub approach_path: Option<ApproachPath>,
     /// `[load.history]`: a load path solved step by step (a static 3D contact).
     pub history: Option<History>,
 }
@@ -652,16 +657,6 @@ pub enum Method {
     Fastsim,
     /// 3D rolling: Polach's closed creep-force law (forces only, no spin).
     Polach,
-}
-
-/// The interface between the bodies beyond elastic contact with Coulomb friction
-/// (`[interface]`).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Interface {
-    /// The hardness H (Pa): the contact pressure is capped at H (an elastic–perfectly
-    /// plastic interface; cells at H are plastic and their gap closes by plastic flow).
-    /// Solved on a surface lattice only.
-    pub hardness: Option<f64>,
 }
 
 /// Solver options.

@@ -6,7 +6,7 @@
 //! planner, which know nothing of TOML, can still point at the line and column of the value
 //! they refuse.
 
-use crate::scene::NormalSweep;
+use crate::scene::{ApproachPath, NormalSweep};
 use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -157,6 +157,10 @@ pub(crate) fn read(src: &str, file: Option<PathBuf>) -> Result<Scene, SceneError
         Some(i) => super::Interface {
             hardness: match &i.hardness {
                 Some(h) => Some(cx.qty(h, "interface.hardness", Dim::STRESS, "hardness")?),
+                None => None,
+            },
+            adhesion: match &i.adhesion {
+                Some(a) => Some(adhesion(&cx, a)?),
                 None => None,
             },
         },
@@ -478,6 +482,45 @@ fn indenter(cx: &Reader<'_>, raw: &RawScene) -> Result<Indenter, SceneError> {
     })
 }
 
+/// `interface.adhesion = { work, range }`: both keys, with their units.
+fn adhesion(
+    cx: &Reader<'_>,
+    a: &toml::Spanned<crate::raw::RawAdhesion>,
+) -> Result<super::AdhesionKeys, SceneError> {
+    cx.record("interface.adhesion", a.span());
+    let r = a.get_ref();
+    let missing = |key: &'static str, what: &str| {
+        cx.err(
+            ErrorKind::Schema,
+            key,
+            Some(a.span()),
+            format!("interface.adhesion needs `{}`", key.rsplit('.').next().unwrap_or(key)),
+        )
+        .hint(format!("adhesion = {{ work = \"50 mJ/m^2\", range = \"10 nm\" }}: {what}"))
+    };
+    let work = match &r.work {
+        Some(w) => {
+            cx.qty(w, "interface.adhesion.work", Dim::FORCE_PER_LENGTH, "work of adhesion")?
+        }
+        None => {
+            return Err(missing(
+                "interface.adhesion.work",
+                "the work of adhesion, energy per area (J/m^2, mJ/m^2)",
+            ))
+        }
+    };
+    let range = match &r.range {
+        Some(h) => cx.qty(h, "interface.adhesion.range", Dim::LENGTH, "range of adhesion")?,
+        None => {
+            return Err(missing(
+                "interface.adhesion.range",
+                "the range of the attraction, a length",
+            ))
+        }
+    };
+    Ok(super::AdhesionKeys { work, range })
+}
+
 fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, SceneError> {
     let (force_dim, force_name) = if geometry.is_2d() {
         (Dim::FORCE_PER_LENGTH, "load per unit length")
@@ -497,8 +540,19 @@ fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, Sc
                 )
                 .hint("normal = P for force control, or approach = d for displacement control"));
         }
-        let d = cx.qty(d, "load.approach", Dim::LENGTH, "approach")?;
-        return finish_load(cx, l, NormalLoad::Approach(d), force_dim, force_name);
+        let (last, path) = match d.get_ref() {
+            RawNormal::One(q) => (
+                cx.qty(&SQty::new(d.span(), q.clone()), "load.approach", Dim::LENGTH, "approach")?,
+                None,
+            ),
+            RawNormal::Sweep(v) => {
+                let path = approach_path(cx, v, d.span())?;
+                (*path.corners.last().unwrap_or(&0.0), Some(path))
+            }
+        };
+        let mut load = finish_load(cx, l, NormalLoad::Approach(last), force_dim, force_name)?;
+        load.approach_path = path;
+        return Ok(load);
     }
     // A load sweep `[from, to, steps]`: the scene's load is the last step.
     let mut sweep = None;
@@ -594,8 +648,59 @@ fn finish_load(
         sliding: l.sliding.unwrap_or(false),
         moment,
         normal_sweep: None,
+        approach_path: None,
         history,
     })
+}
+
+/// `load.approach = [from, to, ..., steps]`: two or more corners (lengths, any sign) and the
+/// number of points per leg.
+fn approach_path(
+    cx: &Reader<'_>,
+    v: &[Qty],
+    span: std::ops::Range<usize>,
+) -> Result<ApproachPath, SceneError> {
+    let bad = || {
+        cx.err(ErrorKind::Schema, "load.approach", Some(span.clone()), "an approach path is `[from, to, steps]`")
+            .hint("e.g. approach = [\"-20 nm\", \"100 nm\", 41]: from and to are lengths (any sign), steps an integer >= 2 (equal steps); more corners before steps turn the path, e.g. [\"-20 nm\", \"100 nm\", \"-20 nm\", 41]")
+    };
+    let Some((Qty::Num(count), corners)) = v.split_last() else { return Err(bad()) };
+    if corners.len() < 2 {
+        return Err(bad());
+    }
+    let count = *count;
+    if count.fract() != 0.0 || !(2.0..=ApproachPath::MAX_STEPS as f64).contains(&count) {
+        return Err(cx
+            .err(ErrorKind::OutOfRange, "load.approach", Some(span), format!("{count} steps"))
+            .hint(format!(
+                "an integer from 2 to {} (points per leg, both corners included)",
+                ApproachPath::MAX_STEPS
+            )));
+    }
+    let points = 1 + (corners.len() - 1) * (count as usize - 1);
+    if points > ApproachPath::MAX_POINTS {
+        return Err(cx
+            .err(
+                ErrorKind::OutOfRange,
+                "load.approach",
+                Some(span),
+                format!("{} legs of {count} points: {points} points in all", corners.len() - 1),
+            )
+            .hint(format!(
+                "at most {} points in all: fewer steps or fewer corners",
+                ApproachPath::MAX_POINTS
+            )));
+    }
+    let mut c = Vec::with_capacity(corners.len());
+    for q in corners {
+        c.push(cx.qty(
+            &SQty::new(span.clone(), q.clone()),
+            "load.approach",
+            Dim::LENGTH,
+            "approach",
+        )?);
+    }
+    Ok(ApproachPath { corners: c, steps: count as usize })
 }
 
 fn outputs(cx: &Reader<'_>, o: Option<&crate::raw::RawOutputs>) -> Result<Outputs, SceneError> {

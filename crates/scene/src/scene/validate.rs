@@ -15,6 +15,8 @@ use super::{
 use crate::eng::eng;
 use crate::error::{ErrorKind, Issue};
 
+mod interface;
+
 /// Every check of `scene`; the first refusal.
 pub(crate) fn validate(scene: &Scene) -> Result<(), Issue> {
     geometry(&scene.geometry)?;
@@ -33,32 +35,7 @@ pub(crate) fn validate(scene: &Scene) -> Result<(), Issue> {
     motion(scene)?;
     outputs(&scene.outputs, scene.geometry.is_2d())?;
     solver(&scene.solver)?;
-    interface(scene)
-}
-
-/// `[interface]`: a positive hardness, on a surface lattice, without a load history.
-fn interface(scene: &Scene) -> Result<(), Issue> {
-    let Some(h) = scene.interface.hardness else { return Ok(()) };
-    positive("interface.hardness", h, "hardness")?;
-    if !matches!(scene.geometry, Geometry::Surface(_)) {
-        return Err(Issue::new(
-            ErrorKind::Unsupported,
-            "interface.hardness",
-            "a hardness cap is solved on a surface lattice only; this geometry is a closed form",
-        )
-        .hint("give geometry.kind = \"surface\" with the same profile (e.g. [geometry.profile] shape = \"sphere\") to solve it on a lattice, or remove interface.hardness"));
-    }
-    if scene.load.history.is_some() {
-        return Err(Issue::new(
-            ErrorKind::Unsupported,
-            "interface.hardness",
-            "a hardness cap under a load history is not solved in this version",
-        )
-        .hint(
-            "remove [load.history] (one load, or a normal-load sweep) or remove interface.hardness",
-        ));
-    }
-    Ok(())
+    interface::interface(scene)
 }
 
 /// `v` finite and not subnormal (0 or at least 2.2e-308 in magnitude).
@@ -479,7 +456,22 @@ fn load(scene: &Scene) -> Result<(), Issue> {
             )
             .hint("normal = \"10 kN\" (the vertical wheel load) or approach = \"50 um\""))
         }
+        (Geometry::Surface(_), NormalLoad::Approach(d))
+            if scene.load.approach_path.is_some() || scene.interface.adhesion.is_some() =>
+        {
+            // Signed: a path and an adhesive contact may hold the surfaces apart.
+            at_most("load.approach", d, &ranges::SMALL_LENGTH)?;
+            interface::approach_path(scene)?;
+        }
         (Geometry::Surface(_) | Geometry::WheelRail(_), NormalLoad::Approach(d)) => {
+            if scene.load.approach_path.is_some() {
+                return Err(Issue::new(
+                    ErrorKind::Unsupported,
+                    "load.approach",
+                    "an approach path is solved for surfaces (geometry.kind = \"surface\")",
+                )
+                .hint("give one approach, e.g. approach = \"50 um\""));
+            }
             within("load.approach", d, &ranges::SMALL_LENGTH)?;
         }
         (_, NormalLoad::Approach(_)) => {

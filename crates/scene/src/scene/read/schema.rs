@@ -176,7 +176,7 @@ static LOAD: Table = Table {
     fields: &[
         f("normal", Kind::QtyOrArray("\"100 N\" (N/m in 2D)", "[\"1 N\", \"100 N\", 20]")),
         f("half_width", Kind::Qty("\"5 mm\"")),
-        f("approach", Kind::Qty("\"2 um\"")),
+        f("approach", Kind::QtyOrArray("\"2 um\"", "[\"-20 nm\", \"100 nm\", 41]")),
         f("tangential", Kind::Qty("\"30 N\" (N/m in 2D)")),
         f("direction_deg", Kind::Num),
         f("friction", Kind::Num),
@@ -264,7 +264,13 @@ static SOLVER: Table = Table {
 };
 
 /// `[interface]`.
-static INTERFACE: Table = Table { fields: &[f("hardness", Kind::Qty("\"2 GPa\""))] };
+static INTERFACE: Table = Table {
+    fields: &[f("hardness", Kind::Qty("\"2 GPa\"")), f("adhesion", Kind::Table(&ADHESION))],
+};
+
+/// `interface.adhesion`.
+static ADHESION: Table =
+    Table { fields: &[f("work", Kind::Qty("\"50 mJ/m^2\"")), f("range", Kind::Qty("\"10 nm\""))] };
 
 /// The whole file.
 static TOP: Table = Table {
