@@ -181,7 +181,10 @@ fn wheel_rail_recipe(
         }
     };
     let motion = match scene.motion {
-        Motion::Wheelset { speed, pitch_rate } => Some(match pitch_rate {
+        Motion::Wheelset { speed, creepage: Some([longitudinal, lateral, spin]), .. } => {
+            Some(wr::Motion::with_creepage(speed, Creepage { longitudinal, lateral, spin }))
+        }
+        Motion::Wheelset { speed, pitch_rate, creepage: None } => Some(match pitch_rate {
             Some(omega) => wr::Motion::rolling(speed, omega),
             None => wr::Motion::free_rolling(speed, w.wheel_radius),
         }),

@@ -212,11 +212,11 @@ pub(super) fn effects(
                 _ => ("none".to_string(), Technique::SteadyRolling),
             };
             if !matches!(r.tangential, stickslip_wheelrail::Tangential::None) {
-                effects.push(on(
-                    E::Rolling,
-                    format!("a wheelset rolling at V = {} with pitch rate {}: each patch's creepages (longitudinal, lateral, spin) from the motion, the position and the patch's contact angle and rolling radius; creep forces by {method}", eng(speed, "m/s"), eng(omega, "rad/s")),
-                    t,
-                ));
+                let why = match r.motion.and_then(|m| m.creepage) {
+                    Some(c) => format!("a wheel rolling at V = {} with the creepages given (motion.creepage: longitudinal {:e}, lateral {:e}, spin {}) on its single patch; creep forces by {method}", eng(speed, "m/s"), c.longitudinal, c.lateral, eng(c.spin, "1/m")),
+                    None => format!("a wheelset rolling at V = {} with pitch rate {}: each patch's creepages (longitudinal, lateral, spin) from the motion, the position and the patch's contact angle and rolling radius; creep forces by {method}", eng(speed, "m/s"), eng(omega, "rad/s")),
+                };
+                effects.push(on(E::Rolling, why, t));
             } else {
                 effects.push(off(
                     E::Rolling,

@@ -586,7 +586,7 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
 fn wheel_rail_checks(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
     use stickslip_wheelrail as wr;
     let stickslip_scene::Geometry::WheelRail(g) = &scene.geometry else { panic!("wheel-rail") };
-    let stickslip_scene::Motion::Wheelset { speed, pitch_rate } = scene.motion else {
+    let stickslip_scene::Motion::Wheelset { speed, pitch_rate, .. } = scene.motion else {
         panic!("a wheelset's motion")
     };
     let w = out.wheel_rail.as_ref().expect("wheel_rail in the result");

@@ -44,6 +44,12 @@ pub struct Motion {
     pub roll_rate: f64,
     /// Yaw rate $\dot\psi$ (rad/s).
     pub yaw_rate: f64,
+    /// Creepages given directly (longitudinal, lateral, spin in the patch's frame of the
+    /// problem's side, as [`crate::PatchSolution::creepage`] reports them), used instead of
+    /// those of the velocities above; the rolling speed is then `speed`. Only a position
+    /// with a single patch takes them ([`Error::OutOfDomain`] named `motion.creepage`
+    /// otherwise: the creepages of two patches differ).
+    pub creepage: Option<Creepage>,
 }
 
 impl Motion {
@@ -57,7 +63,15 @@ impl Motion {
             vertical_velocity: 0.0,
             roll_rate: 0.0,
             yaw_rate: 0.0,
+            creepage: None,
         }
+    }
+
+    /// Rolling forward at `speed` with the creepages `creepage` given directly (a single
+    /// patch; see [`Motion::creepage`]).
+    #[must_use]
+    pub fn with_creepage(speed: f64, creepage: Creepage) -> Self {
+        Self { creepage: Some(creepage), ..Self::rolling(speed, 0.0) }
     }
 
     /// Free rolling at the wheel radius $r_0$ of the profile origin: $\omega_p = -V/r_0$.
@@ -77,6 +91,15 @@ impl Motion {
         ] {
             finite(name, v)?;
         }
+        if let Some(c) = self.creepage {
+            for (name, v) in [
+                ("motion.creepage.longitudinal", c.longitudinal),
+                ("motion.creepage.lateral", c.lateral),
+                ("motion.creepage.spin", c.spin),
+            ] {
+                finite(name, v)?;
+            }
+        }
         if self.speed <= 0.0 {
             return Err(Error::OutOfDomain {
                 name: "motion.speed",
@@ -93,6 +116,11 @@ impl Motion {
             lateral_velocity: -self.lateral_velocity,
             roll_rate: -self.roll_rate,
             yaw_rate: -self.yaw_rate,
+            creepage: self.creepage.map(|c| Creepage {
+                longitudinal: c.longitudinal,
+                lateral: -c.lateral,
+                spin: -c.spin,
+            }),
             ..*self
         }
     }

@@ -23,6 +23,11 @@ fn refusal(e: wr::Error) -> SceneError {
         wr::Error::NotConverged { .. } => SceneError::new(ErrorKind::Solver, e.to_string())
             .key("load.normal")
             .hint("the vertical load could not be met; try load.approach, or a different load"),
+        wr::Error::OutOfDomain { name: "motion.creepage", value, .. } => {
+            SceneError::new(ErrorKind::Unsupported, format!("creepages given directly are taken for a position with one contact patch; this position has {value} patches, each with its own creepages"))
+                .key("motion.creepage")
+                .hint("remove motion.creepage and give motion.pitch_rate: each patch then takes the creepages of the wheelset's motion")
+        }
         wr::Error::OutOfDomain { .. } => SceneError::new(ErrorKind::OutOfRange, e.to_string())
             .key("position")
             .hint("check [position] and [motion]"),

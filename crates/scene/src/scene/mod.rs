@@ -571,6 +571,9 @@ pub enum Motion {
         /// Angular velocity about the axle (rad/s); None: free rolling at the nominal
         /// radius, -V / r0.
         pitch_rate: Option<f64>,
+        /// Creepages given directly (`motion.creepage`: longitudinal, lateral, spin in 1/m),
+        /// for a position with a single patch, instead of those of the motion.
+        creepage: Option<[f64; 3]>,
     },
 }
 

@@ -699,11 +699,29 @@ fn history(scene: &Scene) -> Result<(), Issue> {
     Ok(())
 }
 
+/// Creepages given directly: each 0, or within the creep range in magnitude.
+fn creepages(c: [f64; 3]) -> Result<(), Issue> {
+    for (key, v) in [
+        ("motion.creepage.longitudinal", c[0]),
+        ("motion.creepage.lateral", c[1]),
+        ("motion.creepage.spin", c[2]),
+    ] {
+        if !v.is_finite() || zero_or_within(key, v, &ranges::CREEP).is_err() {
+            return Err(Issue::new(ErrorKind::OutOfRange, key, format!("creepage {v:e} is outside the range verified in double precision: 0, or 1e-12 to 1e6 in magnitude"))
+                .hint("creepages are small numbers (1e-4 to 1e-2 in wheel-rail contact; spin in 1/m); larger ones mean full slip and are still solved, up to 1e6"));
+        }
+    }
+    Ok(())
+}
+
 fn motion(scene: &Scene) -> Result<(), Issue> {
-    if let Motion::Wheelset { speed, pitch_rate } = scene.motion {
+    if let Motion::Wheelset { speed, pitch_rate, creepage } = scene.motion {
         positive("motion.speed", speed, "speed")?;
         if let Some(w) = pitch_rate {
             finite("motion.pitch_rate", w)?;
+        }
+        if let Some(c) = creepage {
+            creepages(c)?;
         }
     }
     if matches!(scene.geometry, Geometry::WheelRail(_))
@@ -736,16 +754,7 @@ fn motion(scene: &Scene) -> Result<(), Issue> {
                 .hint("give load.friction, e.g. friction = 0.3"));
             }
         }
-        for (key, v) in [
-            ("motion.creepage.longitudinal", longitudinal),
-            ("motion.creepage.lateral", lateral),
-            ("motion.creepage.spin", spin),
-        ] {
-            if !v.is_finite() || zero_or_within(key, v, &ranges::CREEP).is_err() {
-                return Err(Issue::new(ErrorKind::OutOfRange, key, format!("creepage {v:e} is outside the range verified in double precision: 0, or 1e-12 to 1e6 in magnitude"))
-                    .hint("creepages are small numbers (1e-4 to 1e-2 in wheel-rail contact; spin in 1/m); larger ones mean full slip and are still solved, up to 1e6"));
-            }
-        }
+        creepages([longitudinal, lateral, spin])?;
     }
     if let Motion::Rolling { speed, creep } = scene.motion {
         within("motion.speed", speed, &ranges::SPEED)?;

@@ -13,6 +13,14 @@ impl WheelRail {
         tangential: Tangential,
         info: &mut SolveInfo,
     ) -> Result<Vec<Tangent>> {
+        if motion.creepage.is_some() && patches.len() > 1 && !matches!(tangential, Tangential::None)
+        {
+            return Err(Error::OutOfDomain {
+                name: "motion.creepage",
+                value: patches.len() as f64,
+                allowed: "creepages given directly for a position with one contact patch; with more patches each has its own creepages: give the wheelset's motion (speed, pitch rate) instead",
+            });
+        }
         patches.iter().map(|p| self.tangential_patch(wheel, p, motion, tangential, info)).collect()
     }
 
@@ -40,7 +48,10 @@ impl WheelRail {
         let (creep, vr, rolling, axes) = match tangential {
             Tangential::None => (Creepage::default(), 0.0, None, None),
             t => {
-                let (creep, vr) = creepages(wheel, motion, &f, &qpt)?;
+                let (creep, vr) = match motion.creepage {
+                    Some(c) => (c, motion.speed),
+                    None => creepages(wheel, motion, &f, &qpt)?,
+                };
                 let grid = sol.contact_grid()?;
                 let (r, axes) = match t {
                     Tangential::Exact { tolerance } => (

@@ -51,12 +51,15 @@ pub(super) fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Mot
             )?;
             let speed = cx.qty(sp, "motion.speed", Dim::SPEED, "speed")?;
             if wheel {
-                if let Some(c) =
-                    mr.creepage.as_ref().map(|c| c.span()).or(mr.creep.as_ref().map(|c| c.span()))
-                {
+                if let Some(c) = &mr.creep {
                     return Err(cx
-                        .err(ErrorKind::Unsupported, "motion.creepage", Some(c), "creepages given directly are not taken for a wheel on a rail")
-                        .hint("the creepages of each patch follow from motion.speed, motion.pitch_rate and [position]: remove motion.creepage (or motion.creep)"));
+                        .err(ErrorKind::Schema, "motion.creep", Some(c.span()), "`creep` is the 2D creep ratio of a rolling cylinder, not a wheel on a rail")
+                        .hint("give the wheelset's motion.pitch_rate, or for a single patch its creepages motion.creepage = { longitudinal, lateral, spin }"));
+                }
+                if let (Some(c), Some(_)) = (&mr.creepage, &mr.pitch_rate) {
+                    return Err(cx
+                        .err(ErrorKind::Schema, "motion.creepage", Some(c.span()), "both `creepage` and `pitch_rate` are given")
+                        .hint("the creepages follow from the pitch rate, or are given directly for a single patch: give one"));
                 }
                 if let Some(t) = &mr.transient {
                     return Err(cx
@@ -69,7 +72,11 @@ pub(super) fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Mot
                         Some(cx.qty(p, "motion.pitch_rate", Dim::PER_TIME, "angular velocity")?)
                     }
                 };
-                return Ok(Motion::Wheelset { speed, pitch_rate });
+                let creepage = match &mr.creepage {
+                    Some(cr) => Some(creepages(cx, cr)?),
+                    None => None,
+                };
+                return Ok(Motion::Wheelset { speed, pitch_rate, creepage });
             }
             let transient = match &mr.transient {
                 None => None,
@@ -119,32 +126,8 @@ pub(super) fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Mot
                         )
                         .hint("`creep` is the 2D creep ratio of a rolling cylinder; `creepage = { longitudinal, lateral, spin }` is for 3D rolling: give one"));
                 }
-                cx.record("motion.creepage", cr.span());
+                let [longitudinal, lateral, spin] = creepages(cx, cr)?;
                 let c = cr.get_ref();
-                let longitudinal = c
-                    .longitudinal
-                    .as_ref()
-                    .map_or(0.0, |v| cx.num(v, "motion.creepage.longitudinal"));
-                let lateral =
-                    c.lateral.as_ref().map_or(0.0, |v| cx.num(v, "motion.creepage.lateral"));
-                let spin = match &c.spin {
-                    None => 0.0,
-                    Some(s) => {
-                        if let Qty::Num(v) = s.get_ref() {
-                            if *v != 0.0 {
-                                return Err(cx
-                                    .err(
-                                        ErrorKind::Unit,
-                                        "motion.creepage.spin",
-                                        Some(s.span()),
-                                        format!("the spin creepage {v} has no unit"),
-                                    )
-                                    .hint("spin is a reciprocal length: write it with its unit, e.g. spin = \"0.1 1/m\" or \"0.1 rad/m\""));
-                            }
-                        }
-                        cx.qty(s, "motion.creepage.spin", Dim::PER_LENGTH, "reciprocal length")?
-                    }
-                };
                 if transient.is_some() {
                     for (key, v) in [("longitudinal", &c.longitudinal), ("lateral", &c.lateral)] {
                         if let Some(v) = v {
@@ -166,4 +149,36 @@ pub(super) fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Mot
             Motion::Rolling { speed, creep }
         }
     })
+}
+
+/// `motion.creepage = { longitudinal, lateral, spin }`: the two ratios, and the spin with
+/// its reciprocal-length unit.
+fn creepages(
+    cx: &Reader<'_>,
+    cr: &toml::Spanned<crate::raw::RawCreepage>,
+) -> Result<[f64; 3], SceneError> {
+    cx.record("motion.creepage", cr.span());
+    let c = cr.get_ref();
+    let longitudinal =
+        c.longitudinal.as_ref().map_or(0.0, |v| cx.num(v, "motion.creepage.longitudinal"));
+    let lateral = c.lateral.as_ref().map_or(0.0, |v| cx.num(v, "motion.creepage.lateral"));
+    let spin = match &c.spin {
+        None => 0.0,
+        Some(s) => {
+            if let Qty::Num(v) = s.get_ref() {
+                if *v != 0.0 {
+                    return Err(cx
+                        .err(
+                            ErrorKind::Unit,
+                            "motion.creepage.spin",
+                            Some(s.span()),
+                            format!("the spin creepage {v} has no unit"),
+                        )
+                        .hint("spin is a reciprocal length: write it with its unit, e.g. spin = \"0.1 1/m\" or \"0.1 rad/m\""));
+                }
+            }
+            cx.qty(s, "motion.creepage.spin", Dim::PER_LENGTH, "reciprocal length")?
+        }
+    };
+    Ok([longitudinal, lateral, spin])
 }
