@@ -54,7 +54,10 @@ fn cattaneo_into_rolling(a: f64, b: f64, nx: usize, ny: usize, force: (f64, f64)
         let (xi, eta) = st.creepage.unwrap();
         if i % nx == 0 {
             let s = steady.solve(&Creepage { longitudinal: xi, lateral: eta, spin }).unwrap();
-            diff.push(traction_difference(&t.solution(), &s, fp0));
+            let now = t.solution();
+            // The step's spin moment is the state's (the same sum, taken without the copy).
+            assert!((st.mz - now.mz).abs() <= 1e-12 * f * p * a, "{} vs {}", st.mz, now.mz);
+            diff.push(traction_difference(&now, &s, fp0));
             last = Some((s, xi, eta));
         }
     }

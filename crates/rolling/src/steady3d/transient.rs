@@ -67,6 +67,9 @@ pub struct TransientStep {
     /// Elastic energy stored by the tangential traction after the step (J):
     /// $\tfrac12\sum_I \mathbf q_I\cdot\mathbf u_I\,h_xh_y$ with $\mathbf u = K\mathbf q$.
     pub elastic_energy: f64,
+    /// Spin moment $M_z$ on body 1 about the lattice origin (N m), as
+    /// [`TransientRolling::solution`]'s `mz`, without building the solution.
+    pub mz: f64,
 }
 
 /// A contact rolling in steps of one element length from a given state.
@@ -256,6 +259,11 @@ impl TransientRolling {
             dissipated += (t.0 * s.0 + t.1 * s.1) * area;
             stored += 0.5 * (t.0 * u.0 + t.1 * u.1) * area;
         }
+        // Body 1's traction is minus the fast solver's (as in `solution`).
+        let mz = -area
+            * (0..n)
+                .map(|k| self.grid.x[k] * self.traction[k].1 - self.grid.y[k] * self.traction[k].0)
+                .sum::<f64>();
         let (mut contact, mut stick) = (0usize, 0usize);
         for k in 0..n {
             if self.grid.pressure[k] > 0.0 {
@@ -282,6 +290,7 @@ impl TransientRolling {
             residual: sol.info.residual.max(sol.info.load_residual),
             dissipated,
             elastic_energy: stored,
+            mz,
         }
     }
 

@@ -113,7 +113,6 @@ pub(crate) fn solve(
         let at_rest = tr.shift_first && k == 0;
         let s = if at_rest { problem.shift(tr.force) } else { problem.roll(tr.force, spin) }
             .map_err(|e| step_err(e, k))?;
-        let sol = problem.solution();
         let along = s.shift.0 * e.0 + s.shift.1 * e.1;
         shift += along;
         dissipated += s.dissipated;
@@ -123,7 +122,7 @@ pub(crate) fn solve(
         residual = residual.max(s.residual);
         hist.tangential.push(s.force.0 * e.0 + s.force.1 * e.1);
         hist.normal.push(n.load);
-        hist.moment.push(sol.mz);
+        hist.moment.push(s.mz);
         hist.shift.push(shift);
         hist.rotation.push(0.0);
         hist.stick_fraction.push(s.stick_fraction);
@@ -134,7 +133,7 @@ pub(crate) fn solve(
         hist.distance.push(s.distance);
         hist.fx.push(s.force.0);
         hist.fy.push(s.force.1);
-        hist.mz.push(sol.mz);
+        hist.mz.push(s.mz);
         // The step at rest does not roll: its creepage column reads 0 (its distance is 0).
         hist.creepage_longitudinal.push(s.creepage.map_or(0.0, |c| c.0));
         hist.creepage_lateral.push(s.creepage.map_or(0.0, |c| c.1));
