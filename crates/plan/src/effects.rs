@@ -27,6 +27,7 @@ impl Recipe {
                 ContactNormal::Ellipse { .. } => Technique::HertzEllipse,
                 ContactNormal::EllipseGiven { .. } => Technique::EllipseGiven,
                 ContactNormal::Patches(_) => Technique::PatchPressure,
+                ContactNormal::Surface { adhesion: Some(_), .. } => Technique::AdhesiveSurface,
                 ContactNormal::Surface { .. } => Technique::SurfaceContact,
             },
         }

@@ -201,11 +201,15 @@ pub enum Technique {
     /// transient discretisation, each step a warm fast solve):
     /// `stickslip_rolling::steady3d::TransientRolling`.
     TransientRolling,
+    /// Maugis–Dugdale adhesion on a surface's lattice along an approach path: the contact
+    /// solver over a cohesive zone updated until it reproduces itself, each point from the
+    /// one before: `stickslip_normal::NormalProblem::solve_adhesive`.
+    AdhesiveSurface,
 }
 
 impl Technique {
     /// Every technique, in the order of declaration.
-    pub const ALL: [Technique; 32] = [
+    pub const ALL: [Technique; 33] = [
         Technique::HertzLine,
         Technique::GradedCylinder,
         Technique::FlatPunch,
@@ -238,6 +242,7 @@ impl Technique {
         Technique::HertzEllipseField,
         Technique::LoadHistory,
         Technique::TransientRolling,
+        Technique::AdhesiveSurface,
     ];
 
     /// Position in [`Technique::ALL`] (an exhaustive match: a new technique must be added
@@ -276,6 +281,7 @@ impl Technique {
             Technique::HertzEllipseField => 29,
             Technique::LoadHistory => 30,
             Technique::TransientRolling => 31,
+            Technique::AdhesiveSurface => 32,
         }
     }
 
@@ -296,6 +302,7 @@ impl Technique {
                 | Technique::Fastsim
                 | Technique::LoadHistory
                 | Technique::TransientRolling
+                | Technique::AdhesiveSurface
         )
     }
 
@@ -361,6 +368,9 @@ impl Technique {
             }
             Technique::Polach => {
                 "Polach's closed creep-force law (no spin; FORMULAS.md R3); force error up to 0.15 fN against the exact theory"
+            }
+            Technique::AdhesiveSurface => {
+                "Maugis-Dugdale adhesion on the surface's lattice: the contact solver (constrained conjugate gradients, FFT products) over a cohesive zone updated until it reproduces itself, each point of the approach path from the one before, numerical"
             }
             Technique::TransientRolling => {
                 "transient rolling in steps of one element length from the start state (Kalker's transient discretisation, each step a warm fast solve; docs/load-histories.md), numerical"
