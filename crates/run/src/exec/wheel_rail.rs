@@ -3,7 +3,7 @@
 //! patches reported in result.json's `wheel_rail`.
 
 use super::outcome::{
-    ContactOut, CreepageOut, Field, Forces, PatchLatticeOut, PatchMaps, RigidOut,
+    ContactOut, CreepageOut, Field, Forces, NormalSolverOut, PatchLatticeOut, PatchMaps, RigidOut,
     TangentialSolveOut, TrackForce, WheelRailOut, WheelRailPatchOut, Zones,
 };
 use super::{lattice, solver_err, Ctx, Parts};
@@ -75,6 +75,41 @@ fn maps(p: &wr::PatchSolution) -> Result<PatchMaps, SceneError> {
     Ok(PatchMaps { x, s, pressure: n.pressure.clone(), gap: p.gap.clone(), qx, qs, stick })
 }
 
+/// `solver.normal` of a wheel on its rail: the final normal solves of the patches (the
+/// wheelset's last trial height), their iterations, products and coarse iterations summed
+/// over the patches and their residuals the largest; `steps` counts every normal solve of
+/// the load iteration (all patches, all trial heights) and `solve_seconds` is their time.
+fn normal_figures(sol: &wr::Solution) -> NormalSolverOut {
+    let mut n = NormalSolverOut {
+        iterations: 0,
+        levels: 0,
+        coarse_iterations: 0,
+        products: 0,
+        preconditioner_products: 0,
+        gap_residual: 0.0,
+        complementarity_residual: 0.0,
+        force_residual: 0.0,
+        residual: 0.0,
+        steps: sol.info.normal_solves,
+        setup_seconds: 0.0,
+        solve_seconds: sol.info.normal_seconds,
+    };
+    for p in &sol.patches {
+        let i = &p.normal.info;
+        n.iterations += i.iterations;
+        n.levels = n.levels.max(i.levels);
+        n.coarse_iterations += i.coarse_iterations;
+        n.products += i.products;
+        n.preconditioner_products += i.preconditioner_products;
+        n.gap_residual = n.gap_residual.max(i.gap_residual);
+        n.complementarity_residual = n.complementarity_residual.max(i.complementarity_residual);
+        n.force_residual = n.force_residual.max(i.force_residual);
+        n.residual = n.residual.max(i.residual);
+        n.setup_seconds += i.setup_seconds;
+    }
+    n
+}
+
 /// Solve the wheel on its rail.
 pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneError> {
     cx.progress("wheel-rail", 0, 1);
@@ -98,7 +133,7 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
     }
     let f = r.friction;
     let mut patches = Vec::with_capacity(sol.patches.len());
-    let (mut iterations, mut residual, mut elements) = (0usize, 0.0f64, 0usize);
+    let (mut iterations, mut products, mut residual, mut elements) = (0usize, 0, 0.0f64, 0usize);
     for p in &sol.patches {
         let coulomb = p.rolling.as_ref().filter(|_| f > 0.0).map(|s| {
             s.pressure
@@ -109,6 +144,7 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
         });
         let tangential = p.rolling.as_ref().map(|s| {
             iterations += s.info.iterations;
+            products += s.info.products;
             residual = residual.max(s.info.residual);
             TangentialSolveOut { iterations: s.info.iterations, residual: s.info.residual }
         });
@@ -151,9 +187,15 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
             maps: maps(p)?,
         });
     }
-    cx.iterations = iterations + sol.info.normal_iterations;
-    cx.inner_iterations = sol.info.normal_iterations;
-    cx.residual = residual;
+    cx.normal = Some(normal_figures(&sol));
+    // The figures of the last solver that ran, each its own: the creep-force solves summed
+    // over the patches (Newton steps, FFT products, the largest residual), or the normal
+    // solver's (its final solves) when no creep forces were asked.
+    if sol.patches.iter().any(|p| p.rolling.is_some()) {
+        (cx.iterations, cx.inner_iterations, cx.residual) = (iterations, products, residual);
+    } else if let Some(n) = &cx.normal {
+        (cx.iterations, cx.inner_iterations, cx.residual) = (n.iterations, n.products, n.residual);
+    }
     cx.elements = elements;
     cx.solve_seconds = sol.info.total_seconds;
     cx.ev.normal_contact += 1;
