@@ -170,6 +170,7 @@ pub struct Sweep {
     mode: Mode,
     wheel_rail: bool,
     id: String,
+    jobs: Option<usize>,
 }
 
 /// A scene given as text that is not TOML, or a varied key that cannot be set in it.
@@ -275,6 +276,7 @@ impl Sweep {
             mode,
             wheel_rail: false,
             id: format!("{:016x}", h.finish()),
+            jobs: None,
         };
         // Setting the keys can fail only for the document's structure, the same at every
         // point: check it once with the first point.
@@ -302,6 +304,24 @@ impl Sweep {
     /// apart.
     pub fn id(&self) -> &str {
         &self.id
+    }
+
+    /// Run at most `jobs` points at once (`stickslip sweep --jobs`): 1 runs them one after
+    /// the other on the calling thread (each point's solvers still use the threads of the
+    /// global pool, as [`Sweep::run_serial`]); more runs them on a pool of that many
+    /// threads, which the points' own solvers share (nested work stays in the pool, so the
+    /// machine is not oversubscribed). Without it, as many as the global pool has threads
+    /// (all cores by default). The memory available may lower the number further. The
+    /// table does not depend on it.
+    #[must_use]
+    pub fn with_jobs(mut self, jobs: usize) -> Sweep {
+        self.jobs = Some(jobs.max(1));
+        self
+    }
+
+    /// The largest number of points run at once, when set by [`Sweep::with_jobs`].
+    pub fn jobs(&self) -> Option<usize> {
+        self.jobs
     }
 
     /// The varied keys.
@@ -458,7 +478,7 @@ impl Sweep {
     }
 
     /// Run the points of `shard` in parallel, as many at a time as there are threads (all
-    /// cores by default) and as the memory available holds (each point's planned memory,
+    /// cores by default, or [`Sweep::with_jobs`]) and as the memory available holds (each point's planned memory,
     /// the largest of them, against what the machine has); `done` is called after each
     /// point (for a progress bar), from the thread that ran it. Each point is still one
     /// independent, audited run, and every solver gives the same bits for any number of
@@ -489,10 +509,13 @@ impl Sweep {
         }
         let at_once = self.concurrency(points);
         let run = || -> Vec<Vec<Cell>> { points.par_iter().map(|&i| one(i)).collect() };
-        if at_once >= rayon::current_num_threads() {
-            run()
-        } else if at_once <= 1 {
+        // The current pool runs min(points, its threads) at once: use it when that is the
+        // number allowed (its idle threads then help the points' own solvers).
+        let threads = rayon::current_num_threads();
+        if at_once <= 1 {
             serial()
+        } else if at_once == threads.min(points.len()) {
+            run()
         } else {
             match rayon::ThreadPoolBuilder::new().num_threads(at_once).build() {
                 Ok(pool) => pool.install(run),
@@ -514,11 +537,15 @@ impl Sweep {
         Table { columns: self.columns(), rows }
     }
 
-    /// How many of `points` may run at once: the threads, fewer when the largest planned
+    /// How many of `points` may run at once: the threads (or [`Sweep::with_jobs`]'s
+    /// number), no more than the points, fewer when the largest planned
     /// memory of a point times the threads exceeds the memory available (unknown memory:
     /// the threads). A point that cannot be read or planned costs nothing (it fails at once).
     fn concurrency(&self, points: &[usize]) -> usize {
-        let threads = rayon::current_num_threads().min(points.len()).max(1);
+        let threads = self.jobs.unwrap_or_else(rayon::current_num_threads).min(points.len()).max(1);
+        if threads == 1 {
+            return 1;
+        }
         let Some(avail) = MachineLimits::detect(f64::INFINITY).memory_bytes else {
             return threads;
         };
