@@ -110,6 +110,42 @@ fn normal_figures(sol: &wr::Solution) -> NormalSolverOut {
     n
 }
 
+/// The wheel-rail library's caches kept between the runs of one process (the points of a
+/// sweep, issue 29 item 9), each under the cell size and the materials its operators were
+/// made for (the library keys its operators by lattice size alone, which holds within one
+/// problem only). A run takes one out and puts it back; points running at once each have
+/// their own; at most 8 are kept.
+static CACHES: std::sync::Mutex<Vec<(String, wr::Cache)>> = std::sync::Mutex::new(Vec::new());
+
+/// A cache for the problem `key`: a kept one with its previous position forgotten (so a
+/// run's result does not depend on the runs before it: only the operators, which depend on
+/// the lattice, the cell and the materials alone, carry over), or a new one.
+fn take_cache(key: &str) -> wr::Cache {
+    let mut kept = CACHES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    match kept.iter().position(|(k, _)| k == key) {
+        Some(i) => {
+            let mut c = kept.swap_remove(i).1;
+            c.forget();
+            c
+        }
+        None => wr::Cache::new(),
+    }
+}
+
+/// Keep `cache` for the next run of the problem `key`, unless it has planned more than 64
+/// operators (one per lattice size: a long sweep over many sizes starts a new one rather
+/// than grow).
+fn put_cache(key: String, cache: wr::Cache) {
+    if cache.misses > 64 {
+        return;
+    }
+    let mut kept = CACHES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if kept.len() >= 8 {
+        kept.remove(0);
+    }
+    kept.push((key, cache));
+}
+
 /// Solve the wheel on its rail.
 pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneError> {
     cx.progress("wheel-rail", 0, 1);
@@ -124,9 +160,11 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
     )
     .map_err(refusal)?;
     let motion = r.motion.unwrap_or_else(|| wr::Motion::rolling(1.0, 0.0));
-    let sol = pb
-        .solve(&r.position, &motion, r.load, r.tangential, &mut wr::Cache::new())
-        .map_err(refusal)?;
+    let key = format!("{:?}", (r.cell, r.bodies.substrate, r.bodies.indenter));
+    let mut cache = take_cache(&key);
+    let sol = pb.solve(&r.position, &motion, r.load, r.tangential, &mut cache);
+    put_cache(key, cache);
+    let sol = sol.map_err(refusal)?;
     cx.progress("wheel-rail", 1, 1);
     if sol.patches.is_empty() {
         return Err(solver_err("the wheel-rail solve", "no contact patch was found"));
