@@ -54,6 +54,12 @@ pub struct SweepArgs {
     /// the others. Without it a sweep starts from its first point.
     #[arg(long)]
     resume: bool,
+    /// Points run at once, each on its own (default: the available cores, or
+    /// RAYON_NUM_THREADS when set). 1 runs them
+    /// one after the other, each point's solvers using every core; the table is the same
+    /// for any number.
+    #[arg(short = 'j', long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    jobs: Option<u32>,
 }
 
 /// `stickslip merge`.
@@ -128,7 +134,10 @@ pub fn cmd_sweep(a: &SweepArgs) -> Result<(), Failure> {
         vary = from_file;
     }
     let mode = if a.zip || a.points.is_some() { Mode::Zip } else { Mode::Cartesian };
-    let sweep = Sweep::with_mode(&text, Some(a.scene.clone()), &vary, mode)?;
+    let mut sweep = Sweep::with_mode(&text, Some(a.scene.clone()), &vary, mode)?;
+    if let Some(j) = a.jobs {
+        sweep = sweep.with_jobs(j as usize);
+    }
     let shard = a.shard.unwrap_or(Shard::ALL);
     let n = shard.points(sweep.len()).count();
     let bar = std::io::stderr().is_terminal().then(|| {

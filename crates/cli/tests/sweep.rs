@@ -71,6 +71,34 @@ fn shards_merge_to_the_full_sweep_byte_for_byte() {
     let _ = std::fs::remove_dir_all(&d);
 }
 
+/// `--jobs 1` (one point at a time) and `--jobs 2` write the same files, byte for byte.
+#[test]
+fn any_number_of_jobs_writes_the_same_table() {
+    let d = tmp("jobs");
+    for j in ["1", "2", "3"] {
+        let o = bin()
+            .arg("sweep")
+            .arg(scene())
+            .args(VARY)
+            .args(["--jobs", j, "--out"])
+            .arg(d.join(j))
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    for f in ["sweep.csv", "sweep.parquet"] {
+        let a = std::fs::read(d.join("1").join(f)).unwrap();
+        for j in ["2", "3"] {
+            assert!(a == std::fs::read(d.join(j).join(f)).unwrap(), "{f} differs at --jobs {j}");
+        }
+    }
+    let mut zero = bin();
+    zero.arg("sweep").arg(scene()).args(VARY).args(["-j", "0", "--out"]).arg(d.join("0"));
+    let o = zero.output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "--jobs 0 is a usage error");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
 #[test]
 fn bad_specs_exit_2_with_the_reason() {
     let d = tmp("bad");

@@ -152,7 +152,7 @@ fn wheel_rail_recipe(
     }
     let options = wr::ProfileOptions { unit: w.profile_unit, ..wr::ProfileOptions::default() };
     let read = |f: &stickslip_scene::ProfileFile, role, key: &str| {
-        wr::Profile::read(&f.text, &f.name, wr::Format::from_name(&f.name), role, &options).map_err(|e| {
+        read_profile(f, role, &options).map_err(|e| {
             Issue::new(ErrorKind::OutOfRange, key, format!("the profile is refused: {e}"))
                 .hint("check the file named in the message at its line; geometry.profile_unit gives the file's length unit (default mm); a rail profile (.prr, .ban) goes in rail_profile, a wheel profile (.prw, .whl) in wheel_profile")
         })
@@ -238,6 +238,40 @@ fn wheel_rail_recipe(
         load,
         tangential,
     })
+}
+
+/// A profile file read, checked and splined, once per process for each name, text, role
+/// and options: the points of a sweep read the same files (issue 29 item 9). The key holds
+/// the whole text, so a file changed between two runs is read again; at most 16 profiles are
+/// kept.
+fn read_profile(
+    f: &stickslip_scene::ProfileFile,
+    role: stickslip_wheelrail::Role,
+    options: &stickslip_wheelrail::ProfileOptions,
+) -> Result<stickslip_wheelrail::Profile, stickslip_wheelrail::Error> {
+    use std::sync::{Arc, Mutex};
+    use stickslip_wheelrail as wr;
+    type Key = (String, Arc<str>, String);
+    static PROFILES: Mutex<Vec<(Key, wr::Profile)>> = Mutex::new(Vec::new());
+    // The role and the options by their exact (Debug) text: f64 prints to the last bit.
+    let key: Key = (f.name.clone(), f.text.clone(), format!("{role:?} {options:?}"));
+    let same =
+        |k: &Key| k.0 == key.0 && k.2 == key.2 && (Arc::ptr_eq(&k.1, &key.1) || k.1 == key.1);
+    if let Some(p) = PROFILES
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .iter()
+        .find(|(k, _)| same(k))
+    {
+        return Ok(p.1.clone());
+    }
+    let p = wr::Profile::read(&f.text, &f.name, wr::Format::from_name(&f.name), role, options)?;
+    let mut cache = PROFILES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if cache.len() >= 16 {
+        cache.remove(0);
+    }
+    cache.push((key, p.clone()));
+    Ok(p)
 }
 
 /// Whether the substrate is viscoelastic: `Some(true)` when alpha != beta, `Some(false)`

@@ -91,6 +91,48 @@ fn a_load_path_on_a_surface_adds_to_the_normal_solve() {
     let n = out.solver.normal.unwrap();
     // The path's steps come on top of the normal solve (they used to replace its time).
     assert!(out.solver.solve_seconds > n.setup_seconds + n.solve_seconds);
+    // The top level is the path's own: every step makes at least one operator product, so
+    // its products outnumber its steps (they used to be the last normal solve's figures,
+    // 12 iterations and 14 products against 41 steps).
+    let steps = out.history.as_ref().unwrap().tangential.len();
+    assert!(steps > 1);
+    assert!(out.solver.inner_iterations >= steps, "{} products", out.solver.inner_iterations);
+    assert!(out.solver.elements == 64 * 64);
+    // The path's note gives the same figures.
+    let note = out.notes.iter().find(|t| t.starts_with("load path:")).unwrap();
+    let said = format!(
+        "{} Newton steps, {} operator products",
+        out.solver.iterations, out.solver.inner_iterations
+    );
+    assert!(note.contains(&said), "{note} lacks {said}");
+    // `solver.normal` counts the surface's first solve and the path's (at least one, at the
+    // path's normal load), and their time.
+    assert!(n.steps >= 2, "{} normal solves", n.steps);
+    assert!(n.iterations > 0 && n.residual <= 1e-10);
+}
+
+#[test]
+fn a_wheel_on_its_rail_reports_both_solvers() {
+    let out = file("wheel_rail_manchester_a22.toml");
+    reports("wheel on rail, exact rolling", &out, true);
+    let w = out.wheel_rail.as_ref().unwrap();
+    // The top level is the creep-force solvers' (summed over the patches).
+    let newton: usize = w.patches.iter().map(|p| p.tangential.as_ref().unwrap().iterations).sum();
+    assert_eq!(out.solver.iterations, newton);
+    let residual =
+        w.patches.iter().map(|p| p.tangential.as_ref().unwrap().residual).fold(0.0, f64::max);
+    assert_eq!(out.solver.residual, residual);
+    // `solver.normal`: the patches' final normal solves, and every solve of the load
+    // iteration in its count and time.
+    let n = out.solver.normal.expect("solver.normal for a wheel on its rail");
+    assert!(n.iterations > 0 && n.products >= n.iterations);
+    assert!(
+        n.residual > 0.0 && n.residual <= 1e-6,
+        "normal residual {} (solver.tolerance 1e-6)",
+        n.residual
+    );
+    assert!(n.steps > w.patches.len(), "{} normal solves", n.steps);
+    assert!(n.solve_seconds > 0.0 && n.solve_seconds <= out.solver.solve_seconds);
 }
 
 #[test]

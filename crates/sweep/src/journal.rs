@@ -141,8 +141,15 @@ impl Sweep {
         let resumed = shard.points(self.len()).count() - todo.len();
         let file = Mutex::new(file);
         let failure: Mutex<Option<TableError>> = Mutex::new(None);
+        // Rows land in the order the points finish (not point order): each record names its
+        // point, and the records are appended whole, one at a time under the lock, each
+        // flushed before the next, so a kill can tear only the last. After a failed write
+        // nothing more is appended (a record after a torn one could be misread).
         let rows = self.run_points(&todo, time_limit, |i, row| {
             let append = || -> Result<(), TableError> {
+                if failure.lock().map_or(true, |f| f.is_some()) {
+                    return Ok(());
+                }
                 let text: Vec<String> = row.iter().map(Cell::to_text).collect();
                 let bytes = record(text.iter().map(String::as_str))?;
                 let mut f = file.lock().map_err(|_| TableError("journal lock".into()))?;

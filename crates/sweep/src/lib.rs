@@ -32,6 +32,7 @@
 // SceneError carries file, position, key and hint for the user; one per point.
 #![allow(clippy::result_large_err)]
 
+mod budget;
 mod journal;
 mod table;
 mod vary;
@@ -170,6 +171,7 @@ pub struct Sweep {
     mode: Mode,
     wheel_rail: bool,
     id: String,
+    jobs: Option<usize>,
 }
 
 /// A scene given as text that is not TOML, or a varied key that cannot be set in it.
@@ -275,6 +277,7 @@ impl Sweep {
             mode,
             wheel_rail: false,
             id: format!("{:016x}", h.finish()),
+            jobs: None,
         };
         // Setting the keys can fail only for the document's structure, the same at every
         // point: check it once with the first point.
@@ -302,6 +305,24 @@ impl Sweep {
     /// apart.
     pub fn id(&self) -> &str {
         &self.id
+    }
+
+    /// Run at most `jobs` points at once (`stickslip sweep --jobs`): 1 runs them one after
+    /// the other on the calling thread (each point's solvers still use the threads of the
+    /// global pool, as [`Sweep::run_serial`]); more runs them on a pool of that many
+    /// threads, which the points' own solvers share (nested work stays in the pool, so the
+    /// machine is not oversubscribed). Without it, as many as the global pool has threads
+    /// (all cores by default). The memory available may lower the number further. The
+    /// table does not depend on it.
+    #[must_use]
+    pub fn with_jobs(mut self, jobs: usize) -> Sweep {
+        self.jobs = Some(jobs.max(1));
+        self
+    }
+
+    /// The largest number of points run at once, when set by [`Sweep::with_jobs`].
+    pub fn jobs(&self) -> Option<usize> {
+        self.jobs
     }
 
     /// The varied keys.
@@ -404,10 +425,21 @@ impl Sweep {
     /// Run point `i` on its own: read, plan, check against the machine (`time_limit`
     /// seconds and the memory available), execute and audit; the row of the table.
     pub fn run_point(&self, i: usize, time_limit: f64) -> Vec<Cell> {
+        self.run_point_in(i, time_limit, None)
+    }
+
+    /// [`Sweep::run_point`], its planned memory reserved from `budget` while it executes.
+    fn run_point_in(
+        &self,
+        i: usize,
+        time_limit: f64,
+        budget: Option<&budget::Budget>,
+    ) -> Vec<Cell> {
         let result = self.point_text(i).and_then(|text| {
             let scene = read_scene(&text, self.file.clone())?;
             let plan = Plan::new(&scene)?;
             plan.check_machine(&MachineLimits::detect(time_limit))?;
+            let _held = budget.map(|b| b.reserve(plan.cost.memory_bytes));
             plan.execute(&RunOptions::default())
         });
         self.row(i, &result)
@@ -458,8 +490,9 @@ impl Sweep {
     }
 
     /// Run the points of `shard` in parallel, as many at a time as there are threads (all
-    /// cores by default) and as the memory available holds (each point's planned memory,
-    /// the largest of them, against what the machine has); `done` is called after each
+    /// cores by default, or [`Sweep::with_jobs`]) and as the memory available holds (each
+    /// point reserves its planned memory from what the machine had free when the sweep
+    /// started, and waits while the points running hold too much; `budget.rs`); `done` is called after each
     /// point (for a progress bar), from the thread that ran it. Each point is still one
     /// independent, audited run, and every solver gives the same bits for any number of
     /// threads, so the table is [`Sweep::run_serial`]'s, in the same order.
@@ -478,21 +511,24 @@ impl Sweep {
         time_limit: f64,
         done: impl Fn(usize, &[Cell]) + Sync,
     ) -> Vec<Vec<Cell>> {
+        let at_once = self.jobs.unwrap_or_else(rayon::current_num_threads).min(points.len());
+        // The memory available when the sweep starts, shared by the points running at once.
+        let budget = (at_once > 1)
+            .then(|| MachineLimits::detect(f64::INFINITY).memory_bytes.map(budget::Budget::new))
+            .flatten();
         let one = |i: usize| {
-            let r = self.run_point(i, time_limit);
+            let r = self.run_point_in(i, time_limit, budget.as_ref());
             done(i, &r);
             r
         };
         let serial = || points.iter().map(|&i| one(i)).collect();
-        if points.is_empty() {
-            return Vec::new();
-        }
-        let at_once = self.concurrency(points);
         let run = || -> Vec<Vec<Cell>> { points.par_iter().map(|&i| one(i)).collect() };
-        if at_once >= rayon::current_num_threads() {
-            run()
-        } else if at_once <= 1 {
+        // The current pool runs min(points, its threads) at once: use it when that is the
+        // number asked (its idle threads then help the points' own solvers).
+        if at_once <= 1 {
             serial()
+        } else if at_once == rayon::current_num_threads().min(points.len()) {
+            run()
         } else {
             match rayon::ThreadPoolBuilder::new().num_threads(at_once).build() {
                 Ok(pool) => pool.install(run),
@@ -512,29 +548,6 @@ impl Sweep {
             })
             .collect();
         Table { columns: self.columns(), rows }
-    }
-
-    /// How many of `points` may run at once: the threads, fewer when the largest planned
-    /// memory of a point times the threads exceeds the memory available (unknown memory:
-    /// the threads). A point that cannot be read or planned costs nothing (it fails at once).
-    fn concurrency(&self, points: &[usize]) -> usize {
-        let threads = rayon::current_num_threads().min(points.len()).max(1);
-        let Some(avail) = MachineLimits::detect(f64::INFINITY).memory_bytes else {
-            return threads;
-        };
-        let largest = points
-            .par_iter()
-            .filter_map(|&i| {
-                let text = self.point_text(i).ok()?;
-                let scene = read_scene(&text, self.file.clone()).ok()?;
-                Some(Plan::new(&scene).ok()?.cost.memory_bytes)
-            })
-            .max()
-            .unwrap_or(0);
-        match avail.checked_div(largest) {
-            Some(fit) => threads.min(fit as usize).max(1),
-            None => threads,
-        }
     }
 }
 

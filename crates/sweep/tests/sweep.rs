@@ -232,4 +232,62 @@ fn parallel_points_give_the_serial_table() {
     // One point (T = 1 N > f P at f = 0.05, P = 5 N) fails and is a row with its reason.
     let status = serial.column("status").unwrap();
     assert!(serial.rows.iter().any(|r| r[status] == Cell::Text(Some("failed".into()))));
+    // `--jobs`: one at a time, two, and more than the points give the same table.
+    for jobs in [1, 2, 9] {
+        let t = s.clone().with_jobs(jobs).run(Shard::ALL, 600.0, |_| {});
+        assert_eq!(t, serial, "jobs {jobs}");
+    }
+}
+
+/// A journal written by parallel points holds its rows in the order they finished; resuming
+/// from one with rows out of point order and a torn last record (a kill during a write)
+/// solves exactly the points it lacks and gives the serial table (issue 30, item 5).
+#[test]
+fn resume_from_an_out_of_order_torn_journal_gives_the_serial_table() {
+    let s = sweep().with_jobs(2);
+    let serial = s.run_serial(Shard::ALL, 600.0, |_| {});
+    let dir = std::env::temp_dir().join(format!("stickslip-sweep-resume-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let journal = stickslip_sweep::journal_path(&dir, "sweep");
+    // A whole journaled run: its table is the serial one; the journal holds every point.
+    let whole = s.run_journaled(Shard::ALL, 600.0, &journal, false, |_| {}).unwrap();
+    assert_eq!(whole.table, serial);
+    assert_eq!((whole.resumed, whole.solved), (0, 10));
+    // Each record by its point, as the bytes it spans (a failed point's reason holds
+    // line breaks inside quotes).
+    let text = std::fs::read_to_string(&journal).unwrap();
+    let mut r = csv::ReaderBuilder::new().has_headers(false).from_reader(text.as_bytes());
+    let mut spans = Vec::new();
+    let mut rec = csv::StringRecord::new();
+    let mut start = 0;
+    while r.read_record(&mut rec).unwrap() {
+        let end = r.position().byte() as usize;
+        spans.push((rec[0].parse::<usize>().ok(), &text[start..end]));
+        start = end;
+    }
+    assert_eq!(spans.len(), 11, "the header and one record per point");
+    let pick = |i: usize| spans.iter().find(|(p, _)| *p == Some(i)).unwrap().1;
+    // Keep points 7, 2, 9, 0 in that order, then half of point 4's record.
+    let mut partial = spans[0].1.to_string();
+    for i in [7, 2, 9, 0] {
+        partial += pick(i);
+    }
+    let torn = pick(4);
+    partial += &torn[..torn.len() / 2];
+    std::fs::write(&journal, &partial).unwrap();
+    let solved = std::sync::Mutex::new(Vec::new());
+    let again = s
+        .run_journaled(Shard::ALL, 600.0, &journal, true, |i| solved.lock().unwrap().push(i))
+        .unwrap();
+    let mut solved = solved.into_inner().unwrap();
+    solved.sort_unstable();
+    assert_eq!(solved, [1, 3, 4, 5, 6, 8], "the points the journal lacks, once each");
+    assert_eq!((again.resumed, again.solved), (4, 6));
+    assert_eq!(again.table, serial);
+    // The journal is whole again: the torn record was cut, the new ones appended.
+    let text = std::fs::read_to_string(&journal).unwrap();
+    let mut r = csv::ReaderBuilder::new().has_headers(false).from_reader(text.as_bytes());
+    assert_eq!(r.records().map(Result::unwrap).count(), 11);
+    assert!(text.ends_with('\n'));
+    std::fs::remove_dir_all(&dir).unwrap();
 }

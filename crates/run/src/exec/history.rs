@@ -45,12 +45,15 @@ impl From<TractionError> for Fail {
 type SemiAxes<'a> = Box<dyn Fn(f64) -> Result<(f64, f64), SceneError> + 'a>;
 
 /// A surface's normal-contact solver, its operator, the last pressure (the next solve's
-/// start) and the last solution.
+/// start), the last solution, and the number of solves of the path with the wall time of
+/// their iterations (for `solver.normal`).
 struct SurfaceSolver<'a> {
     problem: NormalProblem<'a>,
     op: stickslip_normal::NormalOperator,
     warm: RefCell<Option<Vec<f64>>>,
     last: RefCell<Option<NormalSolution>>,
+    solves: std::cell::Cell<usize>,
+    seconds: std::cell::Cell<f64>,
 }
 
 /// How each step's pressure is made on the history's lattice.
@@ -182,6 +185,8 @@ fn setup<'a>(
                     op,
                     warm: RefCell::new(None),
                     last: RefCell::new(None),
+                    solves: std::cell::Cell::new(0),
+                    seconds: std::cell::Cell::new(0.0),
                 })),
             }
         }
@@ -204,6 +209,8 @@ impl Pressure<'_> {
                     .solve_with(&sv.op, TNormalLoad::Force(p), w.as_deref())
                     .map_err(surface_err)?;
                 *sv.warm.borrow_mut() = Some(s.pressure.clone());
+                sv.solves.set(sv.solves.get() + 1);
+                sv.seconds.set(sv.seconds.get() + s.info.solve_seconds);
                 let out = s.pressure.clone();
                 *sv.last.borrow_mut() = Some(s);
                 Ok(out)
@@ -262,6 +269,7 @@ pub(crate) fn run(
         )?),
         _ => None,
     };
+    let t_path = std::time::Instant::now();
     let out = problem
         .run_observed(
             &path,
@@ -287,9 +295,11 @@ pub(crate) fn run(
     if h.moment.is_some() {
         cx.ev.twist += cells * steps.len() as u64;
     }
-    // Added to the normal solver's time when a surface's normal solve ran before the path.
+    // Added to the normal solver's time when a surface's normal solve ran before the path:
+    // the whole path, the normal solves at its loads included (some run before its first
+    // step, to check the corners).
     let path_seconds: f64 = steps.iter().map(|s| s.seconds).sum();
-    cx.solve_seconds += path_seconds;
+    cx.solve_seconds += t_path.elapsed().as_secs_f64();
     cx.elements = st.grid.len();
     cx.iterations = steps.iter().map(|s| s.newton_iterations).sum();
     cx.inner_iterations = steps.iter().map(|s| s.products).sum();
@@ -399,7 +409,25 @@ pub(crate) fn run(
                 .borrow_mut()
                 .take()
                 .ok_or_else(|| solver_err("load path", "no normal solve"))?;
+            // The path's figures stay the run's (`solver.iterations` and the rest, and its
+            // time, which holds these normal solves); `solver.normal` is the last normal
+            // solve's, with the count and time of all of them, the surface's first included.
+            let (iterations, inner, residual, elements, seconds, first) = (
+                cx.iterations,
+                cx.inner_iterations,
+                cx.residual,
+                cx.elements,
+                cx.solve_seconds,
+                cx.normal,
+            );
             let mut s = surface_solution(surface, &sol, *tolerance, None, cx)?;
+            (cx.iterations, cx.inner_iterations, cx.residual, cx.elements, cx.solve_seconds) =
+                (iterations, inner, residual, elements, seconds);
+            if let Some(n) = cx.normal.as_mut() {
+                let (steps0, seconds0) = first.map_or((0, 0.0), |f| (f.steps, f.solve_seconds));
+                n.steps = steps0 + sv.solves.get();
+                n.solve_seconds = seconds0 + sv.seconds.get();
+            }
             s.lattice = lat.clone();
             s.grid = contact_grid;
             s

@@ -443,16 +443,20 @@ pub struct SolverOut {
     /// The normal-tangential coupling of dissimilar bodies, when it was solved.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub coupling: Option<CouplingOut>,
-    /// The normal solver of a surface, when it ran.
+    /// The normal solver of a surface or of a wheel on its rail, when it ran (the top-level
+    /// figures are then the tangential stage's, when there is one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub normal: Option<NormalSolverOut>,
 }
 
 /// `solver.normal` in result.json: the normal-contact solver of a surface (its last load
-/// step; the times cover all steps).
+/// step; the count and times cover all steps) or of a wheel on its rail (the patches' final
+/// solves, counts summed and residuals the largest; the count and time cover every solve of
+/// the vertical-load iteration).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct NormalSolverOut {
-    /// Conjugate-gradient iterations on the surface's lattice.
+    /// Conjugate-gradient iterations on the finest lattice (the surface's, or the patches'),
+    /// coarser levels not included.
     pub iterations: usize,
     /// Coarser lattices solved first (the nested start; 0 for a cold or warm start).
     pub levels: usize,
@@ -470,7 +474,8 @@ pub struct NormalSolverOut {
     pub force_residual: f64,
     /// See `gap_residual`.
     pub residual: f64,
-    /// Load steps solved (a load sweep; 1 otherwise).
+    /// Normal solves: the load steps of a sweep (1 for one load), plus one per normal load
+    /// of a load path; for a wheel on its rail, every patch at every trial height.
     pub steps: usize,
     /// Wall time of planning the operator (s).
     pub setup_seconds: f64,

@@ -3,7 +3,7 @@
 //! patches reported in result.json's `wheel_rail`.
 
 use super::outcome::{
-    ContactOut, CreepageOut, Field, Forces, PatchLatticeOut, PatchMaps, RigidOut,
+    ContactOut, CreepageOut, Field, Forces, NormalSolverOut, PatchLatticeOut, PatchMaps, RigidOut,
     TangentialSolveOut, TrackForce, WheelRailOut, WheelRailPatchOut, Zones,
 };
 use super::{lattice, solver_err, Ctx, Parts};
@@ -80,6 +80,77 @@ fn maps(p: &wr::PatchSolution) -> Result<PatchMaps, SceneError> {
     Ok(PatchMaps { x, s, pressure: n.pressure.clone(), gap: p.gap.clone(), qx, qs, stick })
 }
 
+/// `solver.normal` of a wheel on its rail: the final normal solves of the patches (the
+/// wheelset's last trial height), their iterations, products and coarse iterations summed
+/// over the patches and their residuals the largest; `steps` counts every normal solve of
+/// the load iteration (all patches, all trial heights) and `solve_seconds` is their time.
+fn normal_figures(sol: &wr::Solution) -> NormalSolverOut {
+    let mut n = NormalSolverOut {
+        iterations: 0,
+        levels: 0,
+        coarse_iterations: 0,
+        products: 0,
+        preconditioner_products: 0,
+        gap_residual: 0.0,
+        complementarity_residual: 0.0,
+        force_residual: 0.0,
+        residual: 0.0,
+        steps: sol.info.normal_solves,
+        setup_seconds: 0.0,
+        solve_seconds: sol.info.normal_seconds,
+    };
+    for p in &sol.patches {
+        let i = &p.normal.info;
+        n.iterations += i.iterations;
+        n.levels = n.levels.max(i.levels);
+        n.coarse_iterations += i.coarse_iterations;
+        n.products += i.products;
+        n.preconditioner_products += i.preconditioner_products;
+        n.gap_residual = n.gap_residual.max(i.gap_residual);
+        n.complementarity_residual = n.complementarity_residual.max(i.complementarity_residual);
+        n.force_residual = n.force_residual.max(i.force_residual);
+        n.residual = n.residual.max(i.residual);
+        n.setup_seconds += i.setup_seconds;
+    }
+    n
+}
+
+/// The wheel-rail library's caches kept between the runs of one process (the points of a
+/// sweep, issue 29 item 9), each under the cell size and the materials its operators were
+/// made for (the library keys its operators by lattice size alone, which holds within one
+/// problem only). A run takes one out and puts it back; points running at once each have
+/// their own; at most 8 are kept.
+static CACHES: std::sync::Mutex<Vec<(String, wr::Cache)>> = std::sync::Mutex::new(Vec::new());
+
+/// A cache for the problem `key`: a kept one with its previous position forgotten (so a
+/// run's result does not depend on the runs before it: only the operators, which depend on
+/// the lattice, the cell and the materials alone, carry over), or a new one.
+fn take_cache(key: &str) -> wr::Cache {
+    let mut kept = CACHES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    match kept.iter().position(|(k, _)| k == key) {
+        Some(i) => {
+            let mut c = kept.swap_remove(i).1;
+            c.forget();
+            c
+        }
+        None => wr::Cache::new(),
+    }
+}
+
+/// Keep `cache` for the next run of the problem `key`, unless it has planned more than 64
+/// operators (one per lattice size: a long sweep over many sizes starts a new one rather
+/// than grow).
+fn put_cache(key: String, cache: wr::Cache) {
+    if cache.misses > 64 {
+        return;
+    }
+    let mut kept = CACHES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if kept.len() >= 8 {
+        kept.remove(0);
+    }
+    kept.push((key, cache));
+}
+
 /// Solve the wheel on its rail.
 pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneError> {
     cx.progress("wheel-rail", 0, 1);
@@ -94,16 +165,18 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
     )
     .map_err(refusal)?;
     let motion = r.motion.unwrap_or_else(|| wr::Motion::rolling(1.0, 0.0));
-    let sol = pb
-        .solve(&r.position, &motion, r.load, r.tangential, &mut wr::Cache::new())
-        .map_err(refusal)?;
+    let key = format!("{:?}", (r.cell, r.bodies.substrate, r.bodies.indenter));
+    let mut cache = take_cache(&key);
+    let sol = pb.solve(&r.position, &motion, r.load, r.tangential, &mut cache);
+    put_cache(key, cache);
+    let sol = sol.map_err(refusal)?;
     cx.progress("wheel-rail", 1, 1);
     if sol.patches.is_empty() {
         return Err(solver_err("the wheel-rail solve", "no contact patch was found"));
     }
     let f = r.friction;
     let mut patches = Vec::with_capacity(sol.patches.len());
-    let (mut iterations, mut residual, mut elements) = (0usize, 0.0f64, 0usize);
+    let (mut iterations, mut products, mut residual, mut elements) = (0usize, 0, 0.0f64, 0usize);
     for p in &sol.patches {
         let coulomb = p.rolling.as_ref().filter(|_| f > 0.0).map(|s| {
             s.pressure
@@ -114,6 +187,7 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
         });
         let tangential = p.rolling.as_ref().map(|s| {
             iterations += s.info.iterations;
+            products += s.info.products;
             residual = residual.max(s.info.residual);
             TangentialSolveOut { iterations: s.info.iterations, residual: s.info.residual }
         });
@@ -156,9 +230,15 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
             maps: maps(p)?,
         });
     }
-    cx.iterations = iterations + sol.info.normal_iterations;
-    cx.inner_iterations = sol.info.normal_iterations;
-    cx.residual = residual;
+    cx.normal = Some(normal_figures(&sol));
+    // The figures of the last solver that ran, each its own: the creep-force solves summed
+    // over the patches (Newton steps, FFT products, the largest residual), or the normal
+    // solver's (its final solves) when no creep forces were asked.
+    if sol.patches.iter().any(|p| p.rolling.is_some()) {
+        (cx.iterations, cx.inner_iterations, cx.residual) = (iterations, products, residual);
+    } else if let Some(n) = &cx.normal {
+        (cx.iterations, cx.inner_iterations, cx.residual) = (n.iterations, n.products, n.residual);
+    }
     cx.elements = elements;
     cx.solve_seconds = sol.info.total_seconds;
     cx.ev.normal_contact += 1;
