@@ -198,7 +198,13 @@ fn refusals_name_the_key_and_place() {
         // a range the lattice does not resolve
         (ok.replace("range = \"2 nm\"", "range = \"1 nm\""), "interface.adhesion.range", ErrorKind::OutOfRange, 14),
         // with a hardness
-        (ok.replace("[interface]\n", "[interface]\nhardness = \"1 GPa\"\n"), "interface.adhesion", ErrorKind::Unsupported, 15),
+        (
+            ok.replace(path, "[\"-5 nm\", \"20 nm\", 6]")
+                .replace("[interface]\n", "[interface]\nhardness = \"1 GPa\"\n"),
+            "interface.adhesion",
+            ErrorKind::Unsupported,
+            15,
+        ),
         // friction on it
         (ok.replace("[load]\n", "[load]\ntangential = \"1 nN\"\nfriction = 0.5\n"), "interface.adhesion", ErrorKind::Unsupported, 16),
         // the work missing, and of the wrong dimension
@@ -211,6 +217,13 @@ fn refusals_name_the_key_and_place() {
         (ok.replace(path, "[\"20 nm\", \"20 nm\", 5]"), "load.approach", ErrorKind::Impossible, 12),
         (ok.replace(path, "[\"20 nm\", \"5 mm\", 5]"), "load.approach", ErrorKind::OutOfRange, 12),
         (scene("1 um", 128, path, ""), "load.approach", ErrorKind::Impossible, 12),
+        // a retraction under a hardness cap (no memory of plastic flow)
+        (
+            scene("1 um", 128, "[\"5 nm\", \"20 nm\", \"10 nm\", 5]", "hardness = \"1 GPa\""),
+            "load.approach",
+            ErrorKind::Unsupported,
+            12,
+        ),
     ];
     for (src, key, kind, line) in cases {
         let e = match go(&src) {
@@ -263,4 +276,20 @@ fn rough_periodic_surface_shows_adhesion_hysteresis() {
     assert!(loop_work > 0.0);
     assert!(c.normal.iter().all(|&f| f < 0.0), "tensile along the whole path: {:?}", c.normal);
     assert!(out.audit.passed);
+}
+
+/// An approach path that only presses further under a hardness cap: the plastic share grows
+/// along the path, and the last point equals a single capped solve at its approach.
+#[test]
+fn a_pressing_path_under_a_hardness_cap() {
+    let src = scene("1 um", 128, "[\"5 nm\", \"20 nm\", 4]", "hardness = \"0.1 GPa\"");
+    let out = go(&src).unwrap();
+    let c = out.load_curve.as_ref().unwrap();
+    assert!(c.p0.iter().all(|&p| p <= 0.1e9 * (1.0 + 1e-12)), "{:?}", c.p0);
+    let one = go(&scene("1 um", 128, "\"20 nm\"", "hardness = \"0.1 GPa\"")).unwrap();
+    let last = *c.normal.last().unwrap();
+    let d = (last - one.contact.normal_load).abs() / last;
+    println!("capped path: forces {:?} N, last against a single solve {d:.1e}", c.normal);
+    assert!(d < 1e-6, "{d:.2e}");
+    assert!(out.contact.plastic_fraction.unwrap() > 0.0);
 }

@@ -80,6 +80,14 @@ pub(super) fn approach_path(scene: &Scene) -> Result<(), Issue> {
         )
         .hint("consecutive corners must differ (e.g. [\"-20 nm\", \"100 nm\", 41])"));
     }
+    if scene.interface.hardness.is_some() && p.corners.windows(2).any(|w| w[1] < w[0]) {
+        return Err(Issue::new(
+            ErrorKind::Unsupported,
+            "load.approach",
+            "an approach path that retracts under a hardness cap is not solved: the cap has no memory of plastic flow, so unloading would retrace the loading instead of keeping the permanent plastic displacement",
+        )
+        .hint("give an approach path that only presses further (increasing corners), or remove interface.hardness"));
+    }
     if scene.interface.adhesion.is_none() && p.corners.last().is_some_and(|&c| c <= 0.0) {
         return Err(Issue::new(
             ErrorKind::Impossible,
