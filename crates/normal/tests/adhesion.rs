@@ -59,6 +59,20 @@ mod maugis {
         f64::NAN
     }
 
+    /// The contact radius at the load P on the branch of the largest contact (the first
+    /// crossing from m = 1), by linear interpolation on the fine curve.
+    pub fn radius_at_load(lambda: f64, p: f64) -> f64 {
+        let c = curve(lambda);
+        for w in c.windows(2) {
+            let (p0, p1) = (w[0].1, w[1].1);
+            if (p0 - p) * (p1 - p) <= 0.0 && p0 != p1 {
+                let t = (p - p0) / (p1 - p0);
+                return w[0].0 + t * (w[1].0 - w[0].0);
+            }
+        }
+        f64::NAN
+    }
+
     /// The load at contact radius A (the curve is single-valued in A for A above the
     /// smallest A reached), by linear interpolation on the fine curve.
     pub fn load_at_radius(lambda: f64, a: f64) -> f64 {
@@ -119,31 +133,89 @@ fn sphere_gap(n: usize, h: f64, r: f64) -> Vec<f64> {
         .collect()
 }
 
+/// The share of cell (i, j) where the gap is below `h0`, counted on an m x m midpoint grid
+/// of each quarter cell, the gap over a quarter being the plane through the cell's gap and
+/// the means with its two neighbours across the quarter's outer sides (the model of the
+/// solver's module docs; a free lattice continues the cell's own gap beyond its edge).
+fn counted_share(g: &[f64], n: usize, periodic: bool, (i, j): (usize, usize), h0: f64) -> f64 {
+    let m = 32;
+    let at = |a: isize, b: isize| {
+        let (a, b) = if periodic {
+            (a.rem_euclid(n as isize), b.rem_euclid(n as isize))
+        } else if a < 0 || b < 0 || a >= n as isize || b >= n as isize {
+            (i as isize, j as isize)
+        } else {
+            (a, b)
+        };
+        g[b as usize * n + a as usize]
+    };
+    let (i, j) = (i as isize, j as isize);
+    let c = at(i, j);
+    let mut below = 0usize;
+    for (dx, dy) in [(1, 1), (-1, 1), (1, -1), (-1, -1)] {
+        let (gx, gy) = (0.5 * (c + at(i + dx, j)), 0.5 * (c + at(i, j + dy)));
+        for a in 0..m {
+            for b in 0..m {
+                let (x, y) = ((a as f64 + 0.5) / m as f64, (b as f64 + 0.5) / m as f64);
+                if c + (gx - c) * x + (gy - c) * y < h0 {
+                    below += 1;
+                }
+            }
+        }
+    }
+    below as f64 / (4 * m * m) as f64
+}
+
 /// Independent audit: u = K p of the total pressure by a fresh product, the gap
 /// g = g0 + u - delta; zero (to `tol` of the range) where the contact pressure is positive,
-/// non-negative elsewhere, below the range exactly on the zone; the force is the sum.
-fn audit(pb: &NormalProblem, s: &AdhesiveSolution, g0: &[f64], tol: f64) {
+/// non-negative elsewhere; the share of each cell under the traction 0 where the gap is at
+/// or above the range over the whole cell and its neighbours, 1 where below it there, and
+/// on the zone's edge the share counted on a grid (to the count's resolution); the total
+/// pressure is the contact pressure less the traction; the force is the sum.
+fn audit(pb: &NormalProblem, s: &AdhesiveSolution, g0: &[f64], tol: f64, periodic: bool) {
     let op = pb.operator();
     let mut u = vec![0.0; g0.len()];
     op.apply(&s.normal.pressure, &mut u, &mut op.make_scratch());
     let (h0, s0) = (s.adhesion.range(), s.adhesion.stress());
+    let n = (g0.len() as f64).sqrt() as usize;
+    let g: Vec<f64> = (0..g0.len()).map(|k| g0[k] + u[k] - s.normal.approach).collect();
+    let mut edge = 0;
     for k in 0..g0.len() {
-        let g = g0[k] + u[k] - s.normal.approach;
         let pc = s.contact_pressure[k];
         assert!(pc >= 0.0);
         if pc > 0.0 {
-            assert!(g.abs() <= tol * h0, "cell {k}: gap {g:e} under contact pressure");
+            assert!(g[k].abs() <= tol * h0, "cell {k}: gap {:e} under contact pressure", g[k]);
         } else {
-            assert!(g >= -tol * h0, "cell {k}: penetration {g:e}");
+            assert!(g[k] >= -tol * h0, "cell {k}: penetration {:e}", g[k]);
         }
-        let inside = g < h0;
-        if inside != s.zone[k] {
-            // Only a cell within the tolerance of the range may differ.
-            assert!((g - h0).abs() <= tol * h0, "cell {k}: zone {} but gap {g:e}", s.zone[k]);
+        let f = s.zone_share[k];
+        assert!((0.0..=1.0).contains(&f));
+        assert_eq!(s.zone[k], f > 0.0);
+        let (i, j) = (k % n, k / n);
+        let near: Vec<f64> = [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)]
+            .iter()
+            .map(|(a, b)| (i as isize + a, j as isize + b))
+            .filter(|(a, b)| periodic || (*a >= 0 && *b >= 0 && *a < n as isize && *b < n as isize))
+            .map(|(a, b)| {
+                g[(b.rem_euclid(n as isize) as usize) * n + a.rem_euclid(n as isize) as usize]
+            })
+            .collect();
+        let lo = near.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = near.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let slack = s.zone_residual + 1e-12;
+        if lo >= h0 * (1.0 + tol) {
+            assert!(f <= slack, "cell {k}: share {f} where the gap is above the range");
+        } else if hi < h0 * (1.0 - tol) {
+            assert!(f >= 1.0 - slack, "cell {k}: share {f} where the gap is below the range");
+        } else {
+            edge += 1;
+            let c = counted_share(&g, n, periodic, (i, j), h0);
+            assert!((f - c).abs() <= 2.0 / 32.0 + slack, "cell {k}: share {f}, counted {c}");
         }
-        let p = if s.zone[k] { pc - s0 } else { pc };
-        assert_eq!(p, s.normal.pressure[k]);
+        assert_eq!(s.normal.pressure[k], if f > 0.0 { pc - s0 * f } else { pc });
     }
+    // A zone has an edge, where the shares were counted.
+    assert!(s.zone_cells == 0 || edge > 0);
     let f: f64 = s.normal.pressure.iter().sum::<f64>() * s.normal.hx * s.normal.hy;
     assert!(
         (f - s.normal.force).abs()
@@ -208,8 +280,8 @@ fn sphere_path(
     let ds: Vec<f64> = ds.iter().map(|d| d * sp.ld()).collect();
     let sols = path(&pb, sp.adhesion(), &ds);
     for s in &sols {
-        audit(&pb, s, &g0, 1e-6);
-        assert_eq!(s.zone_residual, 0.0);
+        audit(&pb, s, &g0, 1e-6, false);
+        assert!(s.zone_residual <= 1e-3);
         assert!(s.normal.info.residual <= 1e-9, "residual {:e}", s.normal.info.residual);
     }
     (sols, h / la)
@@ -266,9 +338,9 @@ fn maugis_parameter_one_sphere() {
                 })
                 .fold(0.0, f64::max);
             println!("  largest load difference on the retraction branch: {worst:.4} pi w R");
-            // Measured 0.08 pi w R at h = 0.033 (a discretisation error: the zone edge is
-            // placed to a cell).
-            assert!(worst < 0.1, "{worst}");
+            // Measured 0.0070 pi w R at h = 0.033 with the zone's edge inside the cells (0.08
+            // when a cell was wholly in the zone or not).
+            assert!(worst < 0.02, "{worst}");
         }
     }
     assert!(errors[1] < errors[0], "refinement does not reduce the error: {errors:?}");
@@ -298,8 +370,8 @@ fn dmt_sphere_pull_off() {
     assert_eq!(sols.last().unwrap().zone_cells, 0);
 }
 
-/// A rough periodic surface approached and retracted: the retraction curve lies below the
-/// approach curve (hysteresis), the force is tensile on retraction, the contact jumps in on
+/// A rough periodic surface approached and retracted: the loop of the force against the
+/// approach dissipates work (hysteresis), the force is tensile on retraction, the contact jumps in on
 /// approach (a step whose zone grows over several updates) and lets go on retraction at
 /// once (several contact cells lost in one step), until no contact is left.
 #[test]
@@ -324,11 +396,12 @@ fn rough_periodic_hysteresis() {
     let back = 2 * m - 2;
     let mut widest: f64 = 0.0;
     let mut tensile: f64 = 0.0;
+    let mut work = 0.0;
     for k in 0..m {
         let (a, r) = (&sols[k], &sols[back - k]);
         assert_eq!(a.normal.approach, r.normal.approach);
-        audit(&pb, a, &g0, 1e-6);
-        audit(&pb, r, &g0, 1e-6);
+        audit(&pb, a, &g0, 1e-6, true);
+        audit(&pb, r, &g0, 1e-6, true);
         println!(
             "  delta {:7.3} um: approach F {:10.4e} N area {:6} cells; retraction F {:10.4e} N area {:6} cells",
             a.normal.approach * 1e6,
@@ -337,15 +410,23 @@ fn rough_periodic_hysteresis() {
             r.normal.force,
             r.normal.contact_cells
         );
-        // Never more force on retraction (the contact area need not be larger: a larger
-        // zone may hold the surfaces at a small gap instead of closed).
-        assert!(r.normal.force <= a.normal.force + 1e-9 * a.normal.force.abs());
+        // The retraction curve is not below the approach curve at every approach (a larger
+        // zone pulls more contact closed, whose pressure may outweigh the added tension:
+        // measured 0.4 % less tension on retraction at -0.9 um here); the work the loop
+        // dissipates is what must be positive.
         widest = widest.max(a.normal.force - r.normal.force);
         tensile = tensile.min(r.normal.force);
+        if k > 0 {
+            let (a0, r0) = (&sols[k - 1], &sols[back - k + 1]);
+            let d = a.normal.approach - a0.normal.approach;
+            work += 0.5 * d * (a.normal.force - r.normal.force + a0.normal.force - r0.normal.force);
+        }
     }
     let scale = sols.iter().map(|s| s.normal.force.abs()).fold(0.0, f64::max);
-    println!("largest gap between the curves {widest:.4e} N, most tensile {tensile:.4e} N, scale {scale:.4e} N");
+    let span = up.last().unwrap() - up[0];
+    println!("largest gap between the curves {widest:.4e} N, most tensile {tensile:.4e} N, scale {scale:.4e} N, work dissipated by the loop {work:.4e} J ({:.4} scale x span)", work / (scale * span));
     assert!(widest > 0.05 * scale);
+    assert!(work > 0.01 * scale * span);
     assert!(tensile < -0.01 * scale);
     // Jump-in: some approach step needs several zone updates and adds contact cells.
     assert!(sols[1..m].iter().any(|s| s.zone_updates > 3));
@@ -355,7 +436,7 @@ fn rough_periodic_hysteresis() {
     let (mut jump, mut lost) = (0.0f64, 0usize);
     for w in sols[m - 1..].windows(2) {
         let (a, b) = (&w[0], &w[1]);
-        audit(&pb, b, &g0, 1e-6);
+        audit(&pb, b, &g0, 1e-6, true);
         jump = jump.max(b.normal.force - a.normal.force);
         lost = lost.max(a.normal.contact_cells.saturating_sub(b.normal.contact_cells));
     }
@@ -384,4 +465,105 @@ fn contact_grid_without_tension() {
         .map(|k| s.normal.pressure[k].max(0.0))
         .collect();
     assert_eq!(grid.pressure, expected);
+}
+
+/// JKR's contact radius at the load P (units of pi w R and of the contact radius), on the
+/// stable branch: A^3 = P + 3 + sqrt(6 P + 9) (Johnson, Kendall & Roberts 1971).
+fn jkr_radius(p: f64) -> f64 {
+    (p + 3.0 + (6.0 * p + 9.0).sqrt()).cbrt()
+}
+
+/// Maugis parameter 6 (Tabor parameter 5.2 > 5: JKR; the cohesive zone 0.02 contact radii
+/// wide at the pull-off, one cell at 256²): approached from far to D = 0.2, loaded to
+/// D = 1.6 and retracted past the pull-off to D = -0.6. Along the loading branch the contact
+/// radius (area-equivalent, from the contact cells) is within 2 % of JKR's at the computed
+/// load, and the pull-off (the most tensile force along the path) within 3 % of JKR's
+/// 1.5 pi w R (issue 32 item 2), on 256² cells; the errors fall from 128² to 256².
+#[test]
+fn jkr_sphere() {
+    let sp = Sphere { r: 1e-3, w: 0.05, e_star: 1e6 / 0.75, lambda: 6.0 };
+    let mut errors = Vec::new();
+    for n in [128usize, 256] {
+        let (sols, h) = sphere_path(&sp, n, 4.6, (0.2, 1.6, -0.6), (7, 11));
+        println!("lambda 6, {n}^2 cells of {h:.4} contact-radius units:");
+        let mut worst_radius: f64 = 0.0;
+        for (k, s) in sols.iter().enumerate() {
+            let a = (s.normal.area / PI).sqrt() / sp.la();
+            let p = s.normal.force / sp.lp();
+            let d = s.normal.approach / sp.ld();
+            let jkr = jkr_radius(p);
+            let maugis_a = maugis::radius_at_load(6.0, p);
+            println!(
+                "  {} D {d:7.3} P {p:9.5} (Maugis at D {:9.5}) A {a:7.4} (JKR {jkr:7.4}, error {:7.4}; Maugis {maugis_a:7.4}) zone {} contact {} updates {} ({} extrapolated) iterations {}",
+                if k <= 7 { "load   " } else { "unload " },
+                maugis::load_at_approach(6.0, d),
+                a / jkr - 1.0,
+                s.zone_cells,
+                s.normal.contact_cells,
+                s.zone_updates,
+                s.zone_extrapolations,
+                s.normal.info.iterations,
+            );
+            if k <= 7 {
+                worst_radius = worst_radius.max((a / jkr - 1.0).abs());
+            }
+        }
+        // Loading and unloading pass the same approaches: Maugis's contact branch is one
+        // curve in D, so any difference is the lattice's own hysteresis (the contact edge
+        // held by a cell).
+        let mut trapped: f64 = 0.0;
+        for a in &sols[..8] {
+            for b in &sols[8..] {
+                if (a.normal.approach - b.normal.approach).abs() < 1e-9 * sp.ld() {
+                    trapped = trapped.max((a.normal.force - b.normal.force).abs() / sp.lp());
+                }
+            }
+        }
+        println!("  largest load difference between loading and unloading at one approach: {trapped:.4} pi w R");
+        let po = pull_off(&sols) / sp.lp();
+        let (jkr, maugis) = ((po + 1.5).abs() / 1.5, (po / maugis::pull_off(6.0) - 1.0).abs());
+        println!(
+            "  pull-off {po:.5}: error {jkr:.4} against JKR -1.5, {maugis:.4} against Maugis {:.5}; loading branch: largest contact radius error {worst_radius:.4} against JKR",
+            maugis::pull_off(6.0)
+        );
+        errors.push((jkr, worst_radius, trapped));
+    }
+    assert!(errors[1].0 < errors[0].0 && errors[1].1 < errors[0].1, "{errors:?}");
+    assert!(errors[1].2 < errors[0].2, "{errors:?}");
+    // Measured at 256²: 0.012 and 0.016 (and the lattice's hysteresis 0.009 pi w R, 0.029 at
+    // 128²).
+    assert!(errors[1].0 < 0.03, "pull-off error {}", errors[1].0);
+    assert!(errors[1].1 < 0.02, "contact radius error {}", errors[1].1);
+}
+
+/// The contact solves along an adhesive path start from the previous contact pressure, which
+/// is zero everywhere before the contact forms: such a warm start under approach control
+/// converges (it once stopped with no direction after one iteration) to the solution of the
+/// exact active-set reference on a small sphere, to the solver's tolerance.
+#[test]
+fn zero_warm_start_under_approach() {
+    let n = 12;
+    let h = 1e-5;
+    let g0 = sphere_gap(n, h, 1e-3);
+    let pb = NormalProblem::new(n, n, (h, h), &g0, [silicone(), Material::rigid()], Boundary::Free)
+        .unwrap()
+        .with_tolerance(Tolerance::relative(1e-10).unwrap());
+    let op = pb.operator();
+    let k = common::dense_matrix(&op);
+    for delta in [1e-6, 1.6e-6, 2.4e-6] {
+        let s = pb
+            .solve_with(&op, stickslip_normal::NormalLoad::Approach(delta), Some(&vec![0.0; n * n]))
+            .unwrap();
+        let exact = common::dense_box_approach(&k, &g0, delta, f64::INFINITY);
+        let peak = exact.iter().copied().fold(0.0, f64::max);
+        let diff = s.pressure.iter().zip(&exact).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        println!(
+            "delta {delta:e}: {} contact cells, {} iterations, largest pressure difference {:.2e} of the peak",
+            s.contact_cells,
+            s.info.iterations,
+            diff / peak
+        );
+        assert!(s.contact_cells > 0);
+        assert!(diff <= 1e-7 * peak, "{diff:e} against the peak {peak:e}");
+    }
 }

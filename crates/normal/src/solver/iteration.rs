@@ -59,6 +59,14 @@ impl NormalProblem<'_> {
             }
             (Start::Cold, NormalLoad::Force(_)) => vec![1.0; n],
         };
+        if let (NormalLoad::Approach(d), true) = (load, warm) {
+            // A warm start without a pressed cell gives the iteration no contact set and so
+            // no direction: begin from the rigid interference instead, as a cold start does.
+            if !p.par_iter().any(|&p| p > 0.0) {
+                let k0 = op.self_term();
+                p.par_iter_mut().zip(g0).for_each(|(p, g)| *p = ((d - g) / k0).max(0.0));
+            }
+        }
         if let Some(pf) = force {
             if !rescale(&mut p, pf / area) {
                 // A zero warm start: begin uniform.
