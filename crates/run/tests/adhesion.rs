@@ -29,9 +29,10 @@ fn go(src: &str) -> Result<Outcome, SceneError> {
 /// Maugis parameter 0.63 (w = 50 mJ/m^2, h0 = 2 nm), 256 x 256 cells over 1 um (the
 /// contact is 80 cells across at the deepest approach, 18 at the pull-off): the retraction
 /// from 20 nm to -20 nm passes the pull-off and lets go; the pull-off and the force along
-/// the contact branch follow Maugis's solution. (Measured pull-off errors: +8.6 % at 128²,
-/// +1.7 % at 256², +1.4 % at 512²: the lattice converges to within the path's 1 nm
-/// sampling of the curve.)
+/// the contact branch follow Maugis's solution. (Measured pull-off errors, against Maugis's
+/// -263.0 nN: -0.56 % at 128² and -0.24 % at 256², with the cohesive traction on a cell in
+/// proportion to its share under the range; +8.6 % and +1.7 % when a cell was wholly in the
+/// zone or out of it.)
 #[test]
 fn retraction_follows_maugis_and_passes_the_pull_off() {
     let (w, h0) = (0.05, 2e-9);
@@ -246,10 +247,11 @@ fn refusals_name_the_key_and_place() {
 }
 
 /// A soft rough periodic surface (one period of a self-affine surface, E = 10 MPa,
-/// w = 20 mJ/m^2, h0 = 40 nm) pressed in and pulled back: the retraction pulls harder than
-/// the approach at the same approach (the contacts formed hold on), so the closed
-/// force–approach loop encloses a positive area, the energy adhesion hysteresis dissipates;
-/// and the contact is in tension along the whole path.
+/// w = 20 mJ/m^2, h0 = 40 nm) pressed in and pulled back: the closed force–approach loop
+/// encloses a positive area, the energy adhesion hysteresis dissipates (well above the
+/// solver's noise: the zone shares stop at 1e-5, the forces at 1e-10); the contact is in
+/// tension along the whole path. (That the retraction pulls harder at every approach is not
+/// required: contacts formed on the way in can let go on the way out at another approach.)
 #[test]
 fn rough_periodic_surface_shows_adhesion_hysteresis() {
     let src = "[geometry]\nkind = \"surface\"\nboundary = \"periodic\"\nsize = [\"10 um\", \"10 um\"]\ncells = [128, 128]\n[geometry.profile]\nshape = \"flat\"\n[geometry.roughness]\nhurst = 0.8\nrms_height = \"50 nm\"\nk_low = 2\nk_rolloff = 4\nk_high = 16\nseed = 3\n[substrate]\ne = \"10 MPa\"\nnu = 0.5\n[load]\napproach = [\"-200 nm\", \"-60 nm\", \"-200 nm\", 15]\n[interface]\nadhesion = { work = \"20 mJ/m^2\", range = \"40 nm\" }\n";
@@ -268,12 +270,14 @@ fn rough_periodic_surface_shows_adhesion_hysteresis() {
         let dd = c.approach[i + 1] - c.approach[i];
         loop_work += 0.5 * dd * ((app - ret) + (c.normal[i + 1] - c.normal[j - 1]));
     }
+    let scale = c.normal.iter().fold(0.0f64, |m, f| m.max(f.abs())) * 140e-9;
     println!(
-        "{harder} of {} approaches with the retraction pulling harder; loop energy {loop_work:.3e} J",
-        n / 2
+        "{harder} of {} approaches with the retraction pulling harder; loop energy {loop_work:.3e} J, {:.2e} of the largest force times the span",
+        n / 2,
+        loop_work / scale
     );
-    assert!(harder >= n / 4, "{harder}");
-    assert!(loop_work > 0.0);
+    assert!(harder >= 1, "{harder}");
+    assert!(loop_work > 1e-3 * scale, "{:.3e}", loop_work / scale);
     assert!(c.normal.iter().all(|&f| f < 0.0), "tensile along the whole path: {:?}", c.normal);
     assert!(out.audit.passed);
 }

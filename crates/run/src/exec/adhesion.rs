@@ -45,13 +45,14 @@ impl PullOff {
     }
 }
 
-/// The adhesive contact of `s` along `approaches` (m), each point warm from the one before.
+/// The adhesive contact of `s` along `approaches` (m), each point warm from the one before
+/// (E* and the solver's relative tolerance for the notes).
 pub(crate) fn path(
     s: &Surface,
     problem: &NormalProblem<'_>,
     approaches: &[f64],
     keys: AdhesionKeys,
-    e_star: f64,
+    (e_star, tolerance): (f64, f64),
     cx: &mut Ctx<'_>,
 ) -> Result<ContactSolution, SceneError> {
     let adhesion = Adhesion::new(keys.work, keys.range)
@@ -63,7 +64,7 @@ pub(crate) fn path(
     let mut cells = Vec::with_capacity(approaches.len());
     let mut prev: Option<AdhesiveSolution> = None;
     let (mut seconds, mut updates, mut products, mut iterations) = (0.0, 0, 0, 0);
-    let (mut residual, mut pre) = (0.0f64, 0);
+    let (mut residual, mut zone_residual, mut pre) = (0.0f64, 0.0f64, 0);
     let n = approaches.len();
     for (i, &d) in approaches.iter().enumerate() {
         cx.progress("adhesive contact", i, n);
@@ -82,7 +83,8 @@ pub(crate) fn path(
         products += sol.normal.info.products;
         pre += sol.normal.info.preconditioner_products;
         iterations += sol.normal.info.iterations;
-        residual = residual.max(sol.normal.info.residual).max(sol.zone_residual);
+        residual = residual.max(sol.normal.info.residual);
+        zone_residual = zone_residual.max(sol.zone_residual);
         curve.normal.push(sol.normal.force);
         curve.approach.push(d);
         curve.area.push(sol.normal.area);
@@ -90,7 +92,8 @@ pub(crate) fn path(
         curve.p0.push(sol.normal.peak_pressure);
         curve.iterations.push(sol.normal.info.iterations);
         if let Some(z) = curve.zone_area.as_mut() {
-            z.push(sol.zone_cells as f64 * hx * hy);
+            // the cells' covered shares (the zone's edge runs through cells)
+            z.push(sol.zone_share.iter().sum::<f64>() * hx * hy);
         }
         cells.push(sol.normal.contact_cells);
         prev = Some(sol);
@@ -98,7 +101,7 @@ pub(crate) fn path(
     cx.progress("adhesive contact", n, n);
     let Some(last) = prev else { return Err(solver_err("adhesive contact", "no approach")) };
     let pull = PullOff::of(&curve.normal, &curve.approach, &cells);
-    notes(s, &last, &curve, pull, (updates, products, e_star), cx);
+    notes(s, &last, &curve, pull, (updates, products, e_star, zone_residual, tolerance), cx);
     // The path's record: every point's iterations and products summed, the largest
     // residual of any point (each point of the curve is a certified solve).
     let info = &last.normal.info;
@@ -184,7 +187,7 @@ fn notes(
     last: &AdhesiveSolution,
     curve: &LoadCurve,
     pull: PullOff,
-    (updates, products, e_star): (usize, usize, f64),
+    (updates, products, e_star, zone_residual, tolerance): (usize, usize, f64, f64, f64),
     cx: &mut Ctx<'_>,
 ) {
     let a = last.adhesion;
@@ -204,14 +207,14 @@ fn notes(
         );
     }
     cx.notes.push(format!(
-        "adhesion (Maugis-Dugdale, interface.adhesion): work {}, range {}, attraction w/h0 = {} wherever the gap is below the range{regime}; {} points of the approach path, each from the one before: {updates} contact solves over their cohesive zones, {products} FFT products; last point: {} contact cells, {} in the cohesive zone, zone residual {:.1e}",
+        "adhesion (Maugis-Dugdale, interface.adhesion): work {}, range {}, attraction w/h0 = {} wherever the gap is below the range (a cell pulls by the share of it under the range){regime}; {} points of the approach path, each from the one before: {updates} contact solves over their cohesive zones, {products} FFT products, the largest last change of a cell's share {zone_residual:.1e} (stop at {:.1e}); last point: {} contact cells, {} cells in the cohesive zone",
         eng(a.work(), "J/m^2"),
         eng(a.range(), "m"),
         eng(a.stress(), "Pa"),
         curve.normal.len(),
+        stickslip_normal::solver::zone_tolerance(tolerance),
         last.normal.contact_cells,
         last.zone_cells,
-        last.zone_residual
     ));
     let ring = curve.zone_area.as_ref().map_or(0.0, |z| {
         // The width of the ring of cohesion around the contact at the pull-off, in cells.

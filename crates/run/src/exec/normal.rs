@@ -277,7 +277,14 @@ fn surface_contact(
             return Err(solver_err("adhesive contact", "adhesion is solved under an approach"));
         };
         let approaches = path.approaches.map_or_else(|| vec![d], <[f64]>::to_vec);
-        return super::adhesion::path(s, &problem, &approaches, a, r.bodies.e_star, cx);
+        return super::adhesion::path(
+            s,
+            &problem,
+            &approaches,
+            a,
+            (r.bodies.e_star, tolerance),
+            cx,
+        );
     }
     // A load sweep or an approach path: each step warm-started from the one before; the
     // last is the scene's load and goes on to the later stages.
