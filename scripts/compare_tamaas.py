@@ -110,7 +110,8 @@ def solve_logged(solver, target, log_path=None):
     """Run a tamaas solver at `target` (a mean pressure, or a mean gap for a gap-primal
     solver) with its iteration log (printed on the C stdout and stderr) captured.
 
-    Returns (error, solve seconds, iterations or None, log text, CPU seconds). The error is
+    Returns (error, solve seconds, iterations or None, log text, CPU seconds); the number of
+    passes is the count of header lines in the log text. The error is
     the last one the log prints (its third column), because some solvers' `solve` returns
     0.0 whatever they reached (KatoSaturated in tamaas 2.9.0 does); the value `solve`
     returns is used only when the log has no iteration rows. With `log_path` the log goes
@@ -135,9 +136,24 @@ def solve_logged(solver, target, log_path=None):
     log.seek(0)
     text = log.read()
     log.close()
-    rows = [r.split() for r in text.splitlines() if r.strip() and r.split()[0].isdigit()]
+    # The log may hold several passes, each with its header and a count from 0:
+    # KatoSaturated in tamaas 2.9.0 starts a new pass when it reaches max_iter without
+    # converging (seen at 512 x 512: 5001 iterations, then 4664 more). The iterations
+    # returned are the sum of the passes' last counts.
+    passes, rows = [], []
+    for line in text.splitlines():
+        cols = line.split()
+        if cols and cols[0] == "Iter":
+            passes.append(None)
+        elif cols and cols[0].isdigit():
+            rows.append(cols)
+            if passes:
+                passes[-1] = int(cols[0])
+            else:
+                passes.append(int(cols[0]))
     error = float(rows[-1][2]) if rows and len(rows[-1]) > 2 else float(returned)
-    return error, secs, (int(rows[-1][0]) if rows else None), text, cpu
+    counts = [c for c in passes if c is not None]
+    return error, secs, (sum(counts) if counts else None), text, cpu
 
 
 def run_tamaas(h, size, e, nu, mean_pressure, tol):

@@ -32,6 +32,21 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from compare_tamaas import rough_surface, run_ours, solve_logged  # noqa: E402
 
 
+def pass_counts(text):
+    """The last iteration count of each pass in a tamaas log ("5001 + 530"): KatoSaturated in
+    tamaas 2.9.0 logs two passes, each from iteration 0 with its own header."""
+    counts = []
+    for line in text.splitlines():
+        cols = line.split()
+        if cols[:1] == ["Iter"]:
+            counts.append("-")
+        elif cols and cols[0].isdigit():
+            if not counts:
+                counts.append("-")
+            counts[-1] = cols[0]
+    return " + ".join(counts)
+
+
 def run_kato(h, size, e, nu, mean_pressure, hardness, tol, max_iter, units, log_path):
     """tamaas's KatoSaturated on heights `h` (m) at `mean_pressure` with the cap `hardness`.
 
@@ -71,9 +86,35 @@ def run_kato(h, size, e, nu, mean_pressure, hardness, tol, max_iter, units, log_
         "residual": error,
         "solve_seconds": secs,
         "cpu": cpu,
+        "passes": pass_counts(text),
         "log_tail": "\n".join(text.splitlines()[-5:]),
         "version": tm.__version__,
     }
+
+
+def run_kato_within(seconds, log_path, *args):
+    """run_kato in a forked child, given `seconds` of wall time: returns its result, or None
+    when the child was stopped (its log, kept in `log_path`, then tells how far it got)."""
+    import multiprocessing as mp
+    import pickle
+
+    out = log_path + ".result.pkl"
+
+    def child():
+        with open(out, "wb") as f:
+            pickle.dump(run_kato(*args, log_path), f)
+
+    proc = mp.get_context("fork").Process(target=child)
+    proc.start()
+    proc.join(seconds)
+    if proc.is_alive():
+        proc.terminate()
+        proc.join()
+        return None
+    if proc.exitcode != 0:
+        raise RuntimeError(f"the tamaas child failed (exit {proc.exitcode}); see {log_path}")
+    with open(out, "rb") as f:
+        return pickle.load(f)
 
 
 def main():
@@ -87,6 +128,8 @@ def main():
     ap.add_argument("--tamaas-units", choices=["normalized", "si"], default="normalized",
                     help="pose tamaas's problem with period 1 and E* 1 (default) or in SI units")
     ap.add_argument("--log", default=None, help="keep tamaas's iteration log in this file")
+    ap.add_argument("--tamaas-seconds", type=float, default=None,
+                    help="stop tamaas after this wall time and report how far its log got")
     args = ap.parse_args()
     n, size, e, nu = args.n, 1e-3, 210e9, 0.3
     rms, hurst = 1e-6, 0.8
@@ -104,8 +147,26 @@ def main():
     ours["plastic"] = ours["plastic_fraction"]
     load_before = os.getloadavg()
     try:
-        tam = run_kato(h, size, e, nu, mean_pressure, args.hardness, args.tol, args.max_iter,
-                       args.tamaas_units, args.log)
+        kato_args = (h, size, e, nu, mean_pressure, args.hardness, args.tol, args.max_iter, args.tamaas_units)
+        if args.tamaas_seconds is None:
+            tam = run_kato(*kato_args, args.log)
+        else:
+            log_path = args.log or os.path.join(work, "kato.log")
+            tam = run_kato_within(args.tamaas_seconds, log_path, *kato_args)
+            if tam is None:
+                with open(log_path) as f:
+                    text = f.read()
+                rows = [r.split() for r in text.splitlines() if r.split()[:1] and r.split()[0].isdigit()]
+                passes = pass_counts(text)
+                print(f"{n} x {n}, mean pressure {mean_pressure:.4e} Pa, H {args.hardness:.3e} Pa: ours capped "
+                      f"{ours['iterations']} iterations, solve {ours['solve_seconds']:.3f} s, CPU {ours['cpu']:.3f} s, "
+                      f"contact {ours['fraction']:.6f}, plastic {ours['plastic']:.6f}, residual {ours['residual']:.3e}; "
+                      f"elastic {elastic['iterations']} iterations, solve {elastic['solve_seconds']:.3f} s, "
+                      f"CPU {elastic['cpu']:.3f} s")
+                print(f"tamaas stopped after {args.tamaas_seconds:g} s without converging: passes {passes}, "
+                      f"last logged row {' '.join(rows[-1]) if rows else 'none'}; load average now "
+                      f"{os.getloadavg()[0]:.2f}; the end of its log:\n" + "\n".join(text.splitlines()[-5:]))
+                return 1
     except ImportError:
         print("tamaas is not installed: pip install tamaas (see the docstring)", file=sys.stderr)
         return 2
@@ -121,6 +182,7 @@ def main():
     print(f"{'mean pressure (Pa)':24}{ours['p'].mean():>18.6e}{tam['p'].mean():>18.6e}{elastic['p'].mean():>18.6e}")
     print(f"{'peak pressure (Pa)':24}{ours['p'].max():>18.6e}{tam['p'].max():>18.6e}{elastic['p'].max():>18.6e}")
     print(f"{'iterations':24}{ours['iterations']!s:>18}{tam['iterations']!s:>18}{elastic['iterations']!s:>18}")
+    print(f"{'passes (tamaas)':24}{'':>18}{tam['passes']:>18}{'':>18}")
     print(f"{'solve time (s)':24}{ours['solve_seconds']:>18.3f}{tam['solve_seconds']:>18.3f}{elastic['solve_seconds']:>18.3f}")
     print(f"{'CPU time (s)':24}{ours['cpu']:>18.3f}{tam['cpu']:>18.3f}{elastic['cpu']:>18.3f}")
     print(f"{'run wall time (s)':24}{ours['wall']:>18.3f}{'':>18}{elastic['wall']:>18.3f}")
