@@ -25,6 +25,7 @@ Usage (tamaas in a venv, outside CI):
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -78,9 +79,13 @@ surface = true
     with open(path, "w") as f:
         f.write(scene)
     out = os.path.join(work, "ours")
+    c0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     subprocess.run([binary, "run", path, "--out", out, "--force", "--quiet"], check=True, stdout=subprocess.DEVNULL)
     wall = time.perf_counter() - t0
+    c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    # CPU time (user + system) of the whole run, start-up and writing included
+    cpu = (c1.ru_utime - c0.ru_utime) + (c1.ru_stime - c0.ru_stime)
     with open(os.path.join(out, "result.json")) as f:
         res = json.load(f)
     p = np.array(res["surface"]["p"], dtype=float)  # p[i][j] at (x[i], y[j])
@@ -96,22 +101,31 @@ surface = true
         "residual": resid,
         "solve_seconds": normal["solve_seconds"] + normal["setup_seconds"],
         "wall": wall,
+        "cpu": cpu,
+        "plastic_fraction": res["contact"].get("plastic_fraction"),
     }
 
 
-def solve_logged(solver, mean_pressure):
-    """Run a tamaas solver at `mean_pressure` with its iteration log (printed on the C
-    stdout and stderr) captured: returns (error, solve seconds, iterations or None, log text)."""
-    log = tempfile.TemporaryFile(mode="w+")
+def solve_logged(solver, target, log_path=None):
+    """Run a tamaas solver at `target` (a mean pressure, or a mean gap for a gap-primal
+    solver) with its iteration log (printed on the C stdout and stderr) captured.
+
+    Returns (error, solve seconds, iterations or None, log text, CPU seconds); the number of
+    passes is the count of header lines in the log text. The error is
+    the last one the log prints (its third column), because some solvers' `solve` returns
+    0.0 whatever they reached (KatoSaturated in tamaas 2.9.0 does); the value `solve`
+    returns is used only when the log has no iteration rows. With `log_path` the log goes
+    to that file (kept, so that it survives a killed run) instead of a temporary one."""
+    log = open(log_path, "w+") if log_path else tempfile.TemporaryFile(mode="w+")
     sys.stdout.flush()
     sys.stderr.flush()
     saved = (os.dup(1), os.dup(2))
     os.dup2(log.fileno(), 1)
     os.dup2(log.fileno(), 2)
     try:
-        t0 = time.perf_counter()
-        error = solver.solve(mean_pressure)
-        secs = time.perf_counter() - t0
+        t0, c0 = time.perf_counter(), time.process_time()
+        returned = solver.solve(target)
+        secs, cpu = time.perf_counter() - t0, time.process_time() - c0
     finally:
         sys.stdout.flush()
         sys.stderr.flush()
@@ -121,8 +135,25 @@ def solve_logged(solver, mean_pressure):
         os.close(saved[1])
     log.seek(0)
     text = log.read()
-    rows = [r.split() for r in text.splitlines() if r.strip() and r.split()[0].isdigit()]
-    return error, secs, (int(rows[-1][0]) if rows else None), text
+    log.close()
+    # The log may hold several passes, each with its header and a count from 0:
+    # KatoSaturated in tamaas 2.9.0 starts a new pass when it reaches max_iter without
+    # converging (seen at 512 x 512: 5001 iterations, then 4664 more). The iterations
+    # returned are the sum of the passes' last counts.
+    passes, rows = [], []
+    for line in text.splitlines():
+        cols = line.split()
+        if cols and cols[0] == "Iter":
+            passes.append(None)
+        elif cols and cols[0].isdigit():
+            rows.append(cols)
+            if passes:
+                passes[-1] = int(cols[0])
+            else:
+                passes.append(int(cols[0]))
+    error = float(rows[-1][2]) if rows and len(rows[-1]) > 2 else float(returned)
+    counts = [c for c in passes if c is not None]
+    return error, secs, (sum(counts) if counts else None), text, cpu
 
 
 def run_tamaas(h, size, e, nu, mean_pressure, tol):
@@ -135,7 +166,7 @@ def run_tamaas(h, size, e, nu, mean_pressure, tol):
     solver = tm.PolonskyKeerRey(model, np.ascontiguousarray(h), tol)
     solver.max_iter = 10000
     # tamaas prints its iteration log on the C stdout: captured to read the count
-    error, secs, its, _ = solve_logged(solver, mean_pressure)
+    error, secs, its, _, _ = solve_logged(solver, mean_pressure)
     p = np.array(model.traction, dtype=float).reshape(n, n)
     # gap: u - h up to the constant that closes it where there is pressure, sign so that it
     # is non-negative outside the contact
