@@ -297,3 +297,16 @@ fn a_pressing_path_under_a_hardness_cap() {
     assert!(d < 1e-6, "{d:.2e}");
     assert!(out.contact.plastic_fraction.unwrap() > 0.0);
 }
+
+/// A lattice too small for the contact: the run says at how many points the contact reaches
+/// the edge of the free lattice (the truncated body's forces), and none on a large one.
+#[test]
+fn a_contact_at_the_lattice_edge_is_said() {
+    let adh = "adhesion = { work = \"50 mJ/m^2\", range = \"2 nm\" }";
+    let small = go(&scene("0.2 um", 128, "[\"20 nm\", \"-20 nm\", 41]", adh)).unwrap();
+    let note = small.notes.iter().find(|n| n.contains("reaches the edge")).expect("a note");
+    println!("{note}");
+    assert!(note.contains("of 41 points"), "{note}");
+    let large = go(&scene("1 um", 128, "[\"20 nm\", \"10 nm\", 3]", adh)).unwrap();
+    assert!(!large.notes.iter().any(|n| n.contains("reaches the edge")), "{:?}", large.notes);
+}

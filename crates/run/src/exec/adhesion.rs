@@ -65,6 +65,7 @@ pub(crate) fn path(
     let mut prev: Option<AdhesiveSolution> = None;
     let (mut seconds, mut updates, mut products, mut iterations) = (0.0, 0, 0, 0);
     let (mut residual, mut zone_residual, mut pre) = (0.0f64, 0.0f64, 0);
+    let mut edge: Option<(f64, usize)> = None;
     let n = approaches.len();
     for (i, &d) in approaches.iter().enumerate() {
         cx.progress("adhesive contact", i, n);
@@ -96,12 +97,21 @@ pub(crate) fn path(
             z.push(sol.zone_share.iter().sum::<f64>() * hx * hy);
         }
         cells.push(sol.normal.contact_cells);
+        if sol.normal.touches_boundary {
+            edge.get_or_insert((d, 0)).1 += 1;
+        }
         prev = Some(sol);
     }
     cx.progress("adhesive contact", n, n);
     let Some(last) = prev else { return Err(solver_err("adhesive contact", "no approach")) };
     let pull = PullOff::of(&curve.normal, &curve.approach, &cells);
     notes(s, &last, &curve, pull, (updates, products, e_star, zone_residual, tolerance), cx);
+    if let Some((d, count)) = edge {
+        cx.notes.push(format!(
+            "the contact reaches the edge of the free lattice at {count} of {n} points (the first at the approach {}): the lattice truncates the surface there, and the forces are those of the truncated body (a larger geometry.size)",
+            eng(d, "m")
+        ));
+    }
     // The path's record: every point's iterations and products summed, the largest
     // residual of any point (each point of the curve is a certified solve).
     let info = &last.normal.info;
