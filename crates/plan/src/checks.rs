@@ -575,9 +575,7 @@ pub(crate) fn magnitudes(scene: &Scene, bodies: &Bodies) -> Result<(), Issue> {
     // An approach path is measured at its deepest corner; one that never presses (an
     // adhesive contact held apart) has no contact size to check.
     let normal = match &scene.load.approach_path {
-        Some(p) => {
-            NormalLoad::Approach(p.corners.iter().copied().fold(f64::NEG_INFINITY, f64::max))
-        }
+        Some(p) => NormalLoad::Approach(p.deepest()),
         None => scene.load.normal,
     };
     if matches!(normal, NormalLoad::Approach(d) if d <= 0.0) {
@@ -761,7 +759,7 @@ pub(crate) fn adhesion(
         ));
     }
     let deepest = match (&l.approach_path, l.normal) {
-        (Some(p), _) => p.corners.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        (Some(p), _) => p.deepest(),
         (None, NormalLoad::Approach(d)) => d,
         _ => return Ok(()),
     };

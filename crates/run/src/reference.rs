@@ -160,7 +160,7 @@ fn contact(r: &ContactRecipe, out: &Outcome) -> References {
 }
 
 /// The closed-form load curve of a smooth sphere profile on a free lattice over the
-/// approaches of `out.load_curve`: Hertz's $P = \tfrac43E^*\sqrt R\,\delta^{3/2}$, or under
+/// approaches of `out.load_curve`: Hertz's force at the contact radius $\sqrt{R\delta}$, or under
 /// adhesion Maugis's curve (stickslip-halfspace `adhesion`) from the large contact to the
 /// vanishing one.
 fn sphere_curve(
@@ -190,7 +190,18 @@ fn sphere_curve(
     let lo = lo.max(0.0);
     let n = 200;
     let d: Vec<f64> = (0..=n).map(|i| lo + (hi - lo) * i as f64 / n as f64).collect();
-    let p = d.iter().map(|&d| 4.0 / 3.0 * e_star * radius.sqrt() * d.powf(1.5)).collect();
+    // Hertz: a = sqrt(R d), and the load of that contact radius.
+    let p = d
+        .iter()
+        .map(|&d| {
+            let a = (radius * d).sqrt();
+            if a > 0.0 {
+                HertzSphere::load_for_contact_radius(a, radius, e_star)
+            } else {
+                0.0
+            }
+        })
+        .collect();
     (hi > lo).then_some(("Hertz", d, p))
 }
 

@@ -6,6 +6,7 @@
 
 use std::f64::consts::PI;
 
+use stickslip_halfspace::adhesion::MaugisSphere;
 use stickslip_lattice::ContactGrid;
 use stickslip_normal::{Adhesion, AdhesiveSolution, NormalProblem};
 use stickslip_scene::eng::eng;
@@ -205,16 +206,15 @@ fn notes(
     let h = (s.size[0] / nx as f64).max(s.size[1] / ny as f64);
     let mut regime = String::new();
     if let Profile::Sphere { radius } = s.profile {
-        // Maugis's parameter (Johnson & Greenwood 1997): lambda = 2 sigma0 (R / (pi w K^2))^(1/3)
-        // with K = 4/3 E*; JKR above about 5, DMT below about 0.1.
-        let k = 4.0 / 3.0 * e_star;
-        let lambda = 2.0 * a.stress() * (radius / (PI * a.work() * k * k)).cbrt();
-        regime = format!(
-            "; sphere R = {}: Maugis parameter lambda = {lambda:.3} (JKR pull-off 1.5 pi R w = {}, DMT 2 pi R w = {})",
-            eng(radius, "m"),
-            eng(1.5 * PI * radius * a.work(), "N"),
-            eng(2.0 * PI * radius * a.work(), "N"),
-        );
+        if let Ok(m) = MaugisSphere::new(radius, a.work(), a.range(), e_star) {
+            regime = format!(
+                "; sphere R = {}: Maugis parameter lambda = {:.3} (JKR pull-off 1.5 pi R w = {}, DMT 2 pi R w = {})",
+                eng(radius, "m"),
+                m.lambda(),
+                eng(-m.jkr_pull_off(), "N"),
+                eng(-m.dmt_pull_off(), "N"),
+            );
+        }
     }
     cx.notes.push(format!(
         "adhesion (Maugis-Dugdale, interface.adhesion): work {}, range {}, attraction w/h0 = {} wherever the gap is below the range (a cell pulls by the share of it under the range){regime}; {} points of the approach path, each from the one before: {updates} contact solves over their cohesive zones, {products} FFT products, the largest last change of a cell's share {zone_residual:.1e} (stop at {:.1e}); last point: {} contact cells, {} cells in the cohesive zone",

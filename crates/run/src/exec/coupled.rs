@@ -10,7 +10,7 @@ use stickslip_traction::{ElementState, Load, Tolerance};
 
 use super::friction::TangentialOut;
 use super::lattice::Lattice;
-use super::normal::{surface_err, surface_gap, surface_solution, ContactSolution};
+use super::normal::{surface_err, surface_solution, ContactSolution};
 use super::outcome::{CouplingOut, GridZones, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, GridStep, SurfaceLoad, Tangential};
@@ -40,7 +40,7 @@ pub(crate) fn solve(
     .map_err(|e| solver_err("grid solver load", e))?;
     let [nx, ny] = s.cells;
     let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
-    let gap = surface_gap(s);
+    let gap = s.initial_gap();
     let tol = Tolerance::relative(*tolerance).map_err(|e| solver_err("tolerance", e))?;
     let nload = match load {
         SurfaceLoad::Force(p) => TNormalLoad::Force(*p),

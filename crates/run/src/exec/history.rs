@@ -22,7 +22,7 @@ use stickslip_traction::{ElementState, Error as TractionError, FastConfig, LoadK
 
 use super::friction::TangentialOut;
 use super::lattice::Lattice;
-use super::normal::{surface_err, surface_gap, surface_solution, ContactSolution};
+use super::normal::{surface_err, surface_solution, ContactSolution};
 use super::outcome::{GridZones, HistoryLoopOut, HistoryOut, RigidOut, RuizMaxOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, HistoryRecipe};
@@ -111,7 +111,7 @@ fn box_grid(ax: f64, ay: f64, n: usize) -> Result<(ContactGrid, Lattice), SceneE
 }
 
 /// The lattice and pressure model of the path; `gap` is a surface's initial gap
-/// ([`surface_gap`]), empty otherwise.
+/// ([`stickslip_scene::Surface::initial_gap`]), empty otherwise.
 fn setup<'a>(
     r: &'a ContactRecipe,
     n0: &ContactSolution,
@@ -230,7 +230,7 @@ pub(crate) fn run(
 ) -> Result<(ContactSolution, Lattice, TangentialOut, HistoryOut), SceneError> {
     let pmax = h.normal.iter().copied().fold(0.0, f64::max);
     let gap = match &r.normal {
-        ContactNormal::Surface { surface, .. } => surface_gap(surface),
+        ContactNormal::Surface { surface, .. } => surface.initial_gap(),
         _ => Vec::new(),
     };
     let st = setup(r, n0, pmax, &gap)?;

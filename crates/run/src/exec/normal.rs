@@ -256,7 +256,7 @@ fn surface_contact(
 ) -> Result<ContactSolution, SceneError> {
     let [nx, ny] = s.cells;
     let (hx, hy) = (s.size[0] / nx as f64, s.size[1] / ny as f64);
-    let gap = surface_gap(s);
+    let gap = s.initial_gap();
     let boundary = match s.boundary {
         SurfaceBoundary::Free => Boundary::Free,
         SurfaceBoundary::Periodic => Boundary::Periodic,
@@ -332,12 +332,6 @@ fn surface_contact(
         n.steps = steps.len();
     }
     Ok(out)
-}
-
-/// The initial gap of a surface on its lattice (profile minus roughness at the cell centres,
-/// row-major `j * nx + i`; the lattice is centred on the origin).
-pub(crate) fn surface_gap(s: &stickslip_scene::Surface) -> Vec<f64> {
-    s.initial_gap()
 }
 
 /// The sharp punch against Boussinesq (`PunchOut`): the force at the area-equivalent radius

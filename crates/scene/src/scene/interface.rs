@@ -43,6 +43,12 @@ impl ApproachPath {
     /// The largest number of points of the whole path.
     pub const MAX_POINTS: usize = 10_000;
 
+    /// The deepest (largest) approach of the path (m).
+    #[must_use]
+    pub fn deepest(&self) -> f64 {
+        self.corners.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+    }
+
     /// The approach of every point of the path, in order; a corner shared by two legs
     /// appears once.
     #[must_use]
