@@ -83,9 +83,10 @@ enum Kind {
 /// The residual $\Phi$ and the derivative of the projection at one iterate.
 struct Newton {
     kind: Vec<Kind>,
-    /// $\kappa = fp/|\mathbf t|$ and $\hat t$ of the slip elements.
-    kappa: Vec<f64>,
-    dir: Vec<[f64; 2]>,
+    /// The projection's derivative at each element, a symmetric $2\times2$ matrix
+    /// $(P_{xx}, P_{xy}, P_{yy})$: the identity (stick), zero (free) or
+    /// $\kappa(I - \hat t\hat t^{\mathsf T})$ with $\kappa = fp/|\mathbf t|$ (slip).
+    jac: Vec<[f64; 3]>,
     /// $\Phi$, x components then y.
     phi: Vec<f64>,
     /// Largest $|\Phi_I|$.
@@ -96,8 +97,7 @@ impl Newton {
     fn new(n: usize) -> Self {
         Self {
             kind: vec![Kind::Free; n],
-            kappa: vec![0.0; n],
-            dir: vec![[0.0; 2]; n],
+            jac: vec![[0.0; 3]; n],
             phi: vec![0.0; 2 * n],
             worst: 0.0,
         }
@@ -113,14 +113,17 @@ impl Newton {
             let tn = t[0].hypot(t[1]);
             let proj = if g[k] <= 0.0 {
                 self.kind[k] = Kind::Free;
+                self.jac[k] = [0.0; 3];
                 [0.0, 0.0]
             } else if tn <= g[k] {
                 self.kind[k] = Kind::Stick;
+                self.jac[k] = [1.0, 0.0, 1.0];
                 t
             } else {
                 self.kind[k] = Kind::Slip;
-                self.kappa[k] = g[k] / tn;
-                self.dir[k] = [t[0] / tn, t[1] / tn];
+                let c = g[k] / tn;
+                let d = [t[0] / tn, t[1] / tn];
+                self.jac[k] = [c * (1.0 - d[0] * d[0]), -c * d[0] * d[1], c * (1.0 - d[1] * d[1])];
                 [g[k] * t[0] / tn, g[k] * t[1] / tn]
             };
             let f = [q[0][k] - proj[0], q[1][k] - proj[1]];
@@ -134,16 +137,8 @@ impl Newton {
 
     /// The projection's derivative at element `k` applied to `v`.
     fn apply_p(&self, k: usize, v: [f64; 2]) -> [f64; 2] {
-        match self.kind[k] {
-            Kind::Stick => v,
-            Kind::Free => [0.0, 0.0],
-            Kind::Slip => {
-                let t = self.dir[k];
-                let along = v[0] * t[0] + v[1] * t[1];
-                let c = self.kappa[k];
-                [c * (v[0] - along * t[0]), c * (v[1] - along * t[1])]
-            }
-        }
+        let m = self.jac[k];
+        [m[0] * v[0] + m[1] * v[1], m[1] * v[0] + m[2] * v[1]]
     }
 }
 
@@ -422,8 +417,8 @@ impl SteadyRolling {
     ///
     /// On a lattice at least $2\times$[`NEST_MIN_CELLS`] cells across in both directions the
     /// iteration starts from the solution of the same creepages on the lattice coarsened
-    /// 2 x 2 (itself solved the same way, to a looser tolerance), each element taking its
-    /// coarse element's traction: the slip area is then nearly right, and the fine lattice
+    /// 2 x 2 (itself solved the same way, to a looser tolerance), its tractions interpolated
+    /// bilinearly between the coarse elements' centres: the slip area is then nearly right, and the fine lattice
     /// needs a few Newton steps instead of growing the slip area from the no-slip state.
     /// If that start does not converge, the fine lattice is solved again from the no-slip
     /// state, so the nesting never turns a solvable problem into a failure. The products of
@@ -463,8 +458,7 @@ impl SteadyRolling {
             .ok()?
             .with_max_iterations(self.max_iterations);
         let s = problem.solve(creep).ok()?;
-        let qx = parent.iter().map(|&c| s.qx[c]).collect();
-        let qy = parent.iter().map(|&c| s.qy[c]).collect();
+        let [qx, qy] = prolong(&self.contact, &parent, [&s.qx, &s.qy])?;
         Some(([qx, qy], s.info.products))
     }
 
@@ -618,4 +612,44 @@ impl SteadyRolling {
     ) -> RollingSolution {
         RollingSolution::on_grid(&self.contact, [qx, qy], [sx, sy], stick, info)
     }
+}
+
+/// The coarse tractions carried to the fine elements by bilinear interpolation between the
+/// centres of the coarse elements (weights 9/16, 3/16, 3/16, 1/16 from the fine element's own
+/// block and its three nearest neighbours), renormalised over the neighbours that exist (a
+/// block outside the coarse contact carries nothing to interpolate from).
+fn prolong(fine: &ContactGrid, parent: &[usize], q: [&[f64]; 2]) -> Option<[Vec<f64>; 2]> {
+    let (nx, ny, _, _, cell) = fine.lattice_cells().ok()?;
+    let (cx, cy) = (nx.div_ceil(2), ny.div_ceil(2));
+    let mut block = vec![usize::MAX; cx * cy];
+    for (k, &c) in cell.iter().enumerate() {
+        block[(c / nx / 2) * cx + (c % nx) / 2] = parent[k];
+    }
+    let mut out = [vec![0.0; cell.len()], vec![0.0; cell.len()]];
+    for (k, &c) in cell.iter().enumerate() {
+        let (i, j) = (c % nx, c / nx);
+        let (bi, bj) = (i / 2, j / 2);
+        // The neighbouring block towards the element's side of its block's centre.
+        let ni = if i % 2 == 0 { bi.checked_sub(1) } else { Some(bi + 1).filter(|&v| v < cx) };
+        let nj = if j % 2 == 0 { bj.checked_sub(1) } else { Some(bj + 1).filter(|&v| v < cy) };
+        let mut acc = [0.0; 2];
+        let mut wsum = 0.0;
+        let mut add = |bi: Option<usize>, bj: Option<usize>, w: f64| {
+            if let (Some(bi), Some(bj)) = (bi, bj) {
+                let b = block[bj * cx + bi];
+                if b != usize::MAX {
+                    acc[0] += w * q[0][b];
+                    acc[1] += w * q[1][b];
+                    wsum += w;
+                }
+            }
+        };
+        add(Some(bi), Some(bj), 9.0);
+        add(ni, Some(bj), 3.0);
+        add(Some(bi), nj, 3.0);
+        add(ni, nj, 1.0);
+        out[0][k] = acc[0] / wsum;
+        out[1][k] = acc[1] / wsum;
+    }
+    Some(out)
 }
