@@ -659,6 +659,13 @@ fn contact_recipe(
             "remove interface.hardness, or the tangential load, or use bodies of one material",
         ));
     }
+    if couple && scene.interface.adhesion.is_some() {
+        return Err(unsupported(
+            "interface.adhesion",
+            format!("adhesion between dissimilar bodies (Dundurs beta = {beta:.4}) with a tangential load is not solved in this version (the coupled normal-tangential solve has no cohesive zone)"),
+            "remove the tangential load (the adhesive normal contact of dissimilar bodies is solved), or use bodies of one material",
+        ));
+    }
     if couple && l.normal_sweep.is_some() {
         return Err(unsupported(
             "load.normal",

@@ -745,17 +745,15 @@ pub(crate) fn adhesion(
         ));
     }
     let l = &scene.load;
-    if l.tangential != 0.0
-        || l.moment != 0.0
-        || l.sliding
+    if l.sliding
         || !matches!(scene.motion, Motion::Static)
         || scene.outputs.cycle.is_some()
         || scene.outputs.field.is_some()
     {
         return Err(unsupported(
             "interface.adhesion",
-            "friction on an adhesive contact (a tangential load, a moment, sliding, rolling or a cycle) and the subsurface field under it are not posed by scenes in this version",
-            "remove the tangential load, moment, sliding, motion, outputs.cycle and outputs.field (the adhesive normal contact and its load curve are solved)",
+            "sliding, rolling or a Mindlin cycle on an adhesive contact, and the subsurface field under it, are not posed by scenes in this version (a static tangential load or moment is: it acts at the last point of the approach path)",
+            "remove sliding, motion, outputs.cycle and outputs.field, or pose a static load.tangential or load.moment instead",
         ));
     }
     let deepest = match (&l.approach_path, l.normal) {

@@ -206,8 +206,18 @@ fn refusals_name_the_key_and_place() {
             ErrorKind::Unsupported,
             15,
         ),
-        // friction on it
-        (ok.replace("[load]\n", "[load]\ntangential = \"1 nN\"\nfriction = 0.5\n"), "interface.adhesion", ErrorKind::Unsupported, 16),
+        // sliding on it
+        (ok.replace("[load]\n", "[load]\nsliding = true\nfriction = 0.5\n"), "interface.adhesion", ErrorKind::Unsupported, 16),
+        // a tangential load between dissimilar bodies (a rigid sphere on nu = 0.3: beta != 0)
+        (
+            ok.replace("nu = 0.5", "nu = 0.3")
+                .replace("[load]\n", "[load]\ntangential = \"1 nN\"\nfriction = 0.5\n"),
+            "interface.adhesion",
+            ErrorKind::Unsupported,
+            16,
+        ),
+        // a tangential load where the path ends let go (the retraction passes the pull-off)
+        (ok.replace("[load]\n", "[load]\ntangential = \"1 nN\"\nfriction = 0.5\n"), "load.approach", ErrorKind::Impossible, 14),
         // the work missing, and of the wrong dimension
         (ok.replace("work = \"50 mJ/m^2\", ", ""), "interface.adhesion.work", ErrorKind::Schema, 14),
         (ok.replace("50 mJ/m^2", "50 mN"), "interface.adhesion.work", ErrorKind::Unit, 14),
@@ -309,4 +319,75 @@ fn a_contact_at_the_lattice_edge_is_said() {
     assert!(note.contains("of 41 points"), "{note}");
     let large = go(&scene("1 um", 128, "[\"20 nm\", \"10 nm\", 3]", adh)).unwrap();
     assert!(!large.notes.iter().any(|n| n.contains("reaches the edge")), "{:?}", large.notes);
+}
+
+/// Friction on an adhesive contact (issue 32 item 3): the tangential load acts at the last
+/// point of the approach path on the compressed part of the contact only. Checked against
+/// what Coulomb's law on that pressure demands, from the written arrays: no traction where
+/// the total pressure is tensile or zero, |q| <= f p elsewhere, the traction summing to the
+/// load, the stick area shrinking as the load grows, and the gross-slip limit at f times the
+/// compressive resultant (not f times the net force, which the adhesive pull makes smaller:
+/// a load between the two is carried).
+#[test]
+fn friction_acts_on_the_compression_of_an_adhesive_contact() {
+    let f = 0.5;
+    let base = scene(
+        "1 um",
+        128,
+        "[\"-4 nm\", \"16 nm\", 11]",
+        "adhesion = { work = \"50 mJ/m^2\", range = \"2 nm\" }",
+    );
+    let with = |t: f64| {
+        base.replace("[load]\n", &format!("[load]\ntangential = \"{t:e} N\"\nfriction = {f}\n"))
+    };
+    // The compressive resultant of the last point, from a run with a tiny load.
+    let probe = go(&with(1e-12)).unwrap();
+    let stickslip_run::SurfaceOut::Grid { x, y, p, .. } = &probe.surface else {
+        panic!("a lattice result")
+    };
+    let area = (x[1] - x[0]) * (y[1] - y[0]);
+    let compressive: f64 = p.iter().flatten().map(|p| p.max(0.0)).sum::<f64>() * area;
+    let net = probe.forces.normal;
+    println!("net force {net:.4e} N, compressive resultant {compressive:.4e} N");
+    assert!(net < 0.95 * compressive, "the adhesion pulls: {net:e} against {compressive:e}");
+    let mut last_stick = f64::INFINITY;
+    for share in [0.25, 0.5, 0.75, 0.97] {
+        let t = share * f * compressive;
+        assert!(share < 0.9 || t > f * net, "the load lies between f P_net and f P_c");
+        let out = go(&with(t)).unwrap();
+        let stickslip_run::SurfaceOut::Grid { p, qx, qy, stick, .. } = &out.surface else {
+            panic!("a lattice result")
+        };
+        let p0 = p.iter().flatten().copied().fold(0.0, f64::max);
+        let (mut worst, mut tension, mut sx, mut sy, mut sticks) = (0.0f64, 0.0f64, 0.0, 0.0, 0);
+        for i in 0..p.len() {
+            for j in 0..p[i].len() {
+                let q = qx[i][j].hypot(qy[i][j]);
+                if p[i][j] <= 0.0 {
+                    tension = tension.max(q);
+                } else {
+                    worst = worst.max((q - f * p[i][j]) / (f * p0));
+                }
+                sx += qx[i][j] * area;
+                sy += qy[i][j] * area;
+                if stick[i][j] == 1 {
+                    sticks += 1;
+                }
+            }
+        }
+        let stick_fraction = sticks as f64;
+        println!(
+            "T = {share} f P_c: sum qx {sx:.6e} N against {t:.6e}, sum qy {sy:.1e}, worst (|q| - f p)/(f p0) {worst:.1e}, traction on tension {tension:.1e} Pa, stick cells {sticks}"
+        );
+        assert_eq!(tension, 0.0, "tension carries no friction");
+        assert!(worst <= 1e-9, "Coulomb: {worst:e}");
+        assert!(((sx - t) / t).abs() < 1e-6, "the traction carries the load: {sx:e} vs {t:e}");
+        assert!(sy.abs() < 1e-6 * t, "no lateral resultant: {sy:e}");
+        assert!(stick_fraction < last_stick, "the stick area shrinks as the load grows");
+        last_stick = stick_fraction;
+    }
+    // Beyond f P_c the bodies slide: refused with the key.
+    let e = go(&with(1.02 * f * compressive)).unwrap_err();
+    println!("{e}");
+    assert_eq!(e.key.as_deref(), Some("load.tangential"), "{e}");
 }

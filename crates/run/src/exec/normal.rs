@@ -277,14 +277,26 @@ fn surface_contact(
             return Err(solver_err("adhesive contact", "adhesion is solved under an approach"));
         };
         let approaches = path.approaches.map_or_else(|| vec![d], <[f64]>::to_vec);
-        return super::adhesion::path(
-            s,
-            &problem,
-            &approaches,
-            a,
-            (r.bodies.e_star, tolerance),
-            cx,
-        );
+        let sol =
+            super::adhesion::path(s, &problem, &approaches, a, (r.bodies.e_star, tolerance), cx)?;
+        if r.tangential.is_some() && !sol.grid.pressure.iter().any(|&p| p > 0.0) {
+            // Tension carries no friction: the tangential stage needs compression.
+            return Err(SceneError::new(
+                ErrorKind::Impossible,
+                format!(
+                    "the tangential load acts at the last point of the approach path, the approach {}, where the adhesive contact carries no compression ({}): friction has nothing to act on",
+                    eng(approaches[approaches.len() - 1], "m"),
+                    if sol.grid.pressure.is_empty() {
+                        "the surfaces have let go".to_string()
+                    } else {
+                        format!("only the cohesive zone, which pulls with {}", eng(sol.load, "N"))
+                    }
+                ),
+            )
+            .key("load.approach")
+            .hint("end the approach path pressed (a last corner of load.approach where the bodies touch), or remove the tangential load"));
+        }
+        return Ok(sol);
     }
     // A load sweep or an approach path: each step warm-started from the one before; the
     // last is the scene's load and goes on to the later stages.
