@@ -410,4 +410,11 @@ fn refusals_and_reasons_are_written_in_engineering_units() {
     let s = Scene::from_toml_str(&twisted(1e-2, 2e11, 100.0, 0.3, 2.5e-3), None).unwrap();
     let plan = stickslip_run::Plan::new(&s).unwrap();
     assert!(plan.explain().contains("moment M = 2.500 mN m"), "{}", plan.explain());
+    // Gross slip found by a grid solver (the normal force follows from an approach, so the
+    // planner cannot see it): the load and the capacity with their units.
+    let src = "[geometry]\nkind = \"surface\"\nsize = [\"2 mm\", \"2 mm\"]\ncells = [64, 64]\n[geometry.profile]\nshape = \"sphere\"\nradius = \"10 mm\"\n[substrate]\ne = \"200 GPa\"\nnu = 0.3\n[indenter]\nmodel = \"same\"\n[load]\napproach = \"1 um\"\nfriction = 0.3\ntangential = \"10 N\"\n";
+    let e = solve(src).unwrap_err();
+    let msg = e.to_string();
+    assert!(msg.contains("tangential force 10.00 N exceeds the friction capacity 4.4"), "{msg}");
+    assert_eq!(e.key.as_deref(), Some("load.tangential"), "{e}");
 }

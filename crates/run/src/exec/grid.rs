@@ -15,7 +15,7 @@ use super::normal::ContactSolution;
 use super::outcome::{GridZones, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, Force, GridMethod};
-use stickslip_scene::eng::eng_scaled;
+use stickslip_scene::eng::{eng, eng_scaled};
 use stickslip_scene::{ErrorKind, SceneError, SurfaceBoundary};
 
 /// The grid solve of `method` under a force, a moment, or both.
@@ -156,11 +156,23 @@ fn grid_err(method: GridMethod, e: TractionError) -> SceneError {
         GridMethod::Fast => "fast solver",
     };
     match &e {
-        E::CapacityExceeded { load, .. } => {
+        E::CapacityExceeded { load, requested, capacity } => {
             let key = if *load == LoadKind::Moment { "load.moment" } else { "load.tangential" };
+            let msg = match load {
+                LoadKind::Force | LoadKind::Moment => {
+                    let unit = if *load == LoadKind::Moment { "N m" } else { "N" };
+                    let (mut found, bound) = (eng(*requested, unit), eng(*capacity, unit));
+                    if found == bound {
+                        // rounds to the capacity: the load in full
+                        found = format!("{requested:e} {unit}");
+                    }
+                    format!("{load} {found} exceeds the friction capacity {bound}: the bodies slide (gross slip)")
+                }
+                LoadKind::Combined => e.to_string(),
+            };
             SceneError::new(
                 ErrorKind::Impossible,
-                format!("the load exceeds what friction can carry: {e}"),
+                format!("the load exceeds what friction can carry: {msg}"),
             )
             .key(key)
             .hint("reduce the load: a force alone is carried up to f P, a moment alone up to the spin capacity, and less of each when both act")
