@@ -30,7 +30,9 @@
 //! **Frames.** A patch's frame starts at its region's centre ([`crate::search`]); after the
 //! normal solve it moves to the pressure centroid, with the pressure-weighted mean
 //! inclination of the rail surface as contact angle, unless it is there already
-//! ([`FRAME_ACCEPT`]); then the patch is solved again.
+//! ([`FRAME_ACCEPT`]); then the patch is solved again. Without a previous position to
+//! start from, that first solve runs on a lattice of twice the cell ([`COARSE_MIN_CELLS`]),
+//! and the frame is checked once more against the fine solution's centroid.
 //!
 //! **From one position to the next** ([`Cache`]): the planned normal operators; each
 //! patch's frame offset from its region's centre, its approach, its ratio of total to
