@@ -170,7 +170,10 @@ fn wheel_rail_recipe(
     };
     let cell = scene.solver.cell.map_or((2e-4, 2e-4), |[a, b]| (a, b));
     let load = match l.normal {
-        NormalLoad::Force(p) => wr::VerticalLoad::Force(p),
+        NormalLoad::Force(p) => match w.vertical {
+            stickslip_scene::WheelLoadDefinition::Normal => wr::VerticalLoad::Force(p),
+            stickslip_scene::WheelLoadDefinition::Total => wr::VerticalLoad::TotalForce(p),
+        },
         NormalLoad::Approach(d) => wr::VerticalLoad::Approach(d),
         _ => {
             return Err(unsupported(

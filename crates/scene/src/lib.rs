@@ -68,6 +68,7 @@ pub use scene::{
     Geometry, HeightStep, History, HistoryControl, Indenter, Interface, Load, Method, Motion,
     NormalLoad, NormalSweep, Outputs, Patch, PatchShape, PathSource, Profile, ProfileFile,
     RailSide, Scene, SceneBuilder, SolverOptions, Source, Substrate, Surface, SurfaceBoundary,
-    Transient, TransientStart, WheelRail, WheelsetPosition, DEFAULT_SCENE, MAX_GRID,
+    Transient, TransientStart, WheelLoadDefinition, WheelRail, WheelsetPosition, DEFAULT_SCENE,
+    MAX_GRID,
 };
 pub use units::{parse_quantity, Dim, UnitError};

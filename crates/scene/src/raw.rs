@@ -359,6 +359,23 @@ pub(crate) struct RawLoad {
     /// A load path solved step by step from the previous state (a static 3D contact).
     #[schemars(with = "Option<RawHistory>")]
     pub history: Option<Spanned<RawHistory>>,
+    /// A wheel on its rail: what carries the vertical wheel load `normal`: "normal" (the
+    /// default: the vertical components of the patches' normal forces) or "total" (the
+    /// total vertical force of the wheel on the rail, creep forces included, as CONTACT's
+    /// force control).
+    #[schemars(with = "Option<RawVertical>")]
+    pub vertical: Option<Spanned<String>>,
+}
+
+/// `load.vertical`'s values (for the schema).
+#[derive(JsonSchema)]
+#[serde(rename_all = "lowercase")]
+#[allow(dead_code)]
+pub(crate) enum RawVertical {
+    /// The vertical components of the patches' normal forces carry the load.
+    Normal,
+    /// The total vertical force, creep forces included, carries the load (CONTACT's).
+    Total,
 }
 
 #[derive(Debug, Deserialize, JsonSchema)]

@@ -43,7 +43,7 @@ use std::path::PathBuf;
 
 use rayon::prelude::*;
 
-pub use journal::{journal_path, write_atomically, Journaled};
+pub use journal::{journal_path, write_atomically, Journaled, SYNC_INTERVAL};
 pub use table::{format_f64, Cell, Kind, Table, TableError};
 pub use vary::{read_points, PointsError, Vary, VaryError, VaryValue};
 

@@ -6,11 +6,13 @@
 //!
 //! ```sh
 //! cargo run --release -p stickslip-wheelrail --example manchester -- \
-//!     [left|right] [--exact|--fastsim] [--normal] [--repeat N] [--smoothing MM]
+//!     [left|right] [--exact|--fastsim] [--normal] [--forget] [--repeat N] [--smoothing MM]
 //! ```
 //!
 //! `--normal` presses the wheel with the issue's load definition (the normal forces'
 //! vertical components carry it) instead of CONTACT's (the total vertical force);
+//! `--forget` makes each position start from its own estimates, as the points of a sweep do
+//! (by default the [`Cache`] hands each position's frames, height and pressure to the next);
 //! `--smoothing` sets the profiles' smoothing length in millimetres (default 0: the
 //! interpolating spline).
 //!
@@ -99,6 +101,7 @@ fn run(
     method: Tangential,
     load: fn(f64) -> VerticalLoad,
     cache: &mut Cache,
+    forget: bool,
 ) -> (Vec<Solution>, f64) {
     let t0 = Instant::now();
     let out = cases
@@ -106,6 +109,9 @@ fn run(
         .map(|c| {
             let pos = Position { lateral: c.lateral, yaw: c.yaw, roll: c.roll };
             let motion = Motion::rolling(c.speed, c.pitch_rate);
+            if forget {
+                cache.forget();
+            }
             pb.solve(&pos, &motion, load(c.load), method, cache)
                 .unwrap_or_else(|e| panic!("position y = {} mm: {e}", c.lateral * 1e3))
         })
@@ -131,6 +137,8 @@ fn main() {
         .and_then(|v| v.parse::<f64>().ok())
         .unwrap_or(0.0)
         * 1e-3;
+    // --forget: each position starts from its own estimates (as a sweep's points do).
+    let forget = args.iter().any(|a| a == "--forget");
     let pb = problem(side, smoothing);
     let cases = cases(side_name);
     let reference = contact_reference(side_name);
@@ -155,7 +163,7 @@ fn main() {
         let mut best = f64::INFINITY;
         let mut sols = vec![];
         for _ in 0..repeat {
-            let (s, t) = run(&pb, &cases, method, load, &mut cache);
+            let (s, t) = run(&pb, &cases, method, load, &mut cache, forget);
             best = best.min(t);
             sols = s;
         }

@@ -297,13 +297,20 @@ pub(crate) fn audit(plan: &Plan, out: &Outcome, cx: &Ctx<'_>) -> Audit {
                 );
             }
         }
-        if let Some(load) = w.vertical_load {
-            b.at_most(
+        match (w.vertical_load, w.vertical) {
+            (Some(load), Some("total")) => b.at_most(
+                "load balance",
+                (w.total_on_rail.fz - load).abs() / load,
+                WHEEL_LOAD_TOLERANCE,
+                "|the total vertical force of the wheel on the rail (creep forces included) - the vertical wheel load| / the load",
+            ),
+            (Some(load), _) => b.at_most(
                 "load balance",
                 (w.normal_vertical - load).abs() / load,
                 WHEEL_LOAD_TOLERANCE,
                 "|sum over the patches of Fn cos(delta) - the vertical wheel load| / the load",
-            );
+            ),
+            _ => {}
         }
         let contact_angles_ok = w.patches.iter().all(|p| {
             p.contact_angle.abs() < std::f64::consts::FRAC_PI_2 && p.fn_ > 0.0 && p.area > 0.0

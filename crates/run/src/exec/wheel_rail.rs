@@ -324,6 +324,11 @@ pub(crate) fn run(r: &WheelRailRecipe, cx: &mut Ctx<'_>) -> Result<Parts, SceneE
                 wr::VerticalLoad::Force(p) | wr::VerticalLoad::TotalForce(p) => Some(p),
                 wr::VerticalLoad::Approach(_) => None,
             },
+            vertical: match r.load {
+                wr::VerticalLoad::Force(_) => Some("normal"),
+                wr::VerticalLoad::TotalForce(_) => Some("total"),
+                wr::VerticalLoad::Approach(_) => None,
+            },
             normal_vertical,
             patches,
             profiles: {

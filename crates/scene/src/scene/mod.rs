@@ -80,6 +80,20 @@ pub struct WheelRail {
     pub wheel_radius: f64,
     /// The wheelset's position (`[position]`).
     pub position: WheelsetPosition,
+    /// What carries the vertical wheel load `load.normal` (`load.vertical`).
+    pub vertical: WheelLoadDefinition,
+}
+
+/// What carries the vertical wheel load of a wheel on its rail (`load.vertical`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum WheelLoadDefinition {
+    /// `"normal"` (the default): the vertical components of the patches' normal forces,
+    /// $\sum_p F_{n,p}\cos\delta_p$.
+    #[default]
+    Normal,
+    /// `"total"`: the total vertical force of the wheel on the rail, creep forces included,
+    /// $\sum_p (F_{n,p}\cos\delta_p + F_{s,p}\sin\delta_p)$ (CONTACT's force control).
+    Total,
 }
 
 /// Left or right rail.

@@ -529,6 +529,16 @@ fn load(cx: &Reader<'_>, raw: &RawScene, geometry: &Geometry) -> Result<Load, Sc
     };
     let l = raw.load.get_ref();
     let lspan = raw.load.span();
+    if let (Some(v), false) = (&l.vertical, matches!(geometry, Geometry::WheelRail(_))) {
+        return Err(cx
+            .err(
+                ErrorKind::Schema,
+                "load.vertical",
+                Some(v.span()),
+                "load.vertical says what carries the vertical wheel load of a wheel on its rail; this geometry is not one",
+            )
+            .hint("remove load.vertical, or set geometry.kind = \"wheel-rail\""));
+    }
     if let Some(d) = &l.approach {
         if l.normal.is_some() || l.half_width.is_some() {
             return Err(cx

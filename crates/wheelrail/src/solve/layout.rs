@@ -1,7 +1,23 @@
 //! Each patch's lattice over its interpenetration region, and its frame moved to the
 //! pressure centroid.
 
+use super::working::resample;
 use super::*;
+
+/// The coarse lattice of the first pass over the lattice `fine`: cells of twice its sides,
+/// at least covering it, about the same centre, its sizes rounded up to [`LATTICE_ROUND`];
+/// `None` when `fine` has fewer than [`COARSE_MIN_CELLS`] cells along a side.
+fn coarse_of(fine: &Lattice) -> Option<Lattice> {
+    if fine.nx < COARSE_MIN_CELLS || fine.ns < COARSE_MIN_CELLS {
+        return None;
+    }
+    let round = |n: usize| n.div_ceil(2).div_ceil(LATTICE_ROUND) * LATTICE_ROUND;
+    let (nx, ns) = (round(fine.nx), round(fine.ns));
+    let (hx, hs) = (2.0 * fine.hx, 2.0 * fine.hs);
+    let (xc, sc) =
+        (fine.x0 + 0.5 * fine.nx as f64 * fine.hx, fine.s0 + 0.5 * fine.ns as f64 * fine.hs);
+    Some(Lattice { nx, ns, hx, hs, x0: xc - 0.5 * nx as f64 * hx, s0: sc - 0.5 * ns as f64 * hs })
+}
 
 impl WheelRail {
     /// Lay out the patches: frames from the interpenetration regions with the wheel at
@@ -112,6 +128,9 @@ impl WheelRail {
             if !x0.is_finite() {
                 (x0, x1, s0, s1) = (-hx, hx, -hs, hs);
             }
+            // Without a remembered patch the first pass runs on a coarse lattice
+            // ([`COARSE_MIN_CELLS`]).
+            let coarse = remembered.is_none();
             let mut extra = 0.0;
             let mut w = loop {
                 let (mx, ms) = (
@@ -129,9 +148,16 @@ impl WheelRail {
                     x0: 0.5 * (x0 + x1) - 0.5 * nx as f64 * hx,
                     s0: 0.5 * (s0 + s1) - 0.5 * ns as f64 * hs,
                 };
-                let mut w = Working::new(rail, &wheel, z_lattice, frame, lat, (lo, hi))?;
+                let mut w = match coarse_of(&lat) {
+                    Some(c) if coarse => {
+                        let mut w = Working::new(rail, &wheel, z_lattice, frame, c, (lo, hi))?;
+                        w.fine = Some(lat);
+                        w
+                    }
+                    _ => Working::new(rail, &wheel, z_lattice, frame, lat, (lo, hi))?,
+                };
                 w.gap_at(z_lattice);
-                if !touches_border(&w.gap, &lat) || extra > 2.0 {
+                if !touches_border(&w.gap, &w.lattice) || extra > 2.0 {
                     break w;
                 }
                 extra = 2.0 * extra + 0.25;
@@ -156,6 +182,21 @@ impl WheelRail {
         rail: &PlacedRail<'_>,
         p: &Working,
     ) -> Result<Option<(f64, f64, f64)>> {
+        let Some((xb, sb, delta)) = self.centroid(rail, p)? else { return Ok(None) };
+        let lat = p.lattice;
+        let (fx, fs, fd) = FRAME_ACCEPT;
+        let off =
+            xb.abs() > fx * lat.hx || sb.abs() > fs * lat.hs || (delta - p.frame.delta).abs() > fd;
+        Ok(off.then_some((xb, sb, delta)))
+    }
+
+    /// The pressure centroid $(\bar x, \bar s)$ of a solved patch in its frame and the
+    /// pressure-weighted mean inclination of the rail surface (`None` without pressure).
+    pub(super) fn centroid(
+        &self,
+        rail: &PlacedRail<'_>,
+        p: &Working,
+    ) -> Result<Option<(f64, f64, f64)>> {
         let Some(sol) = &p.sol else { return Ok(None) };
         let lat = p.lattice;
         let (mut ps, mut px, mut pss, mut pa) = (0.0, 0.0, 0.0, 0.0);
@@ -173,17 +214,15 @@ impl WheelRail {
         if ps <= 0.0 {
             return Ok(None);
         }
-        let (xb, sb, delta) = (px / ps, pss / ps, pa / ps);
-        let (fx, fs, fd) = FRAME_ACCEPT;
-        let off =
-            xb.abs() > fx * lat.hx || sb.abs() > fs * lat.hs || (delta - p.frame.delta).abs() > fd;
-        Ok(off.then_some((xb, sb, delta)))
+        Ok(Some((px / ps, pss / ps, pa / ps)))
     }
 
     /// The patch once more with its frame at the pressure centroid $(\bar x, \bar s)$ and the
     /// pressure-weighted mean inclination of the rail surface as its contact angle
     /// ([`WheelRail::off_centre`]); the lattice keeps its size and moves with the frame, so
-    /// the pressure carries over cell by cell as the next warm start.
+    /// the pressure carries over cell by cell as the next warm start. A coarse patch of the
+    /// first pass takes its lattice of the final cell size instead, moved with the frame, and
+    /// its pressure sampled there as the warm start.
     pub(super) fn refine(
         &self,
         rail: &PlacedRail<'_>,
@@ -204,10 +243,19 @@ impl WheelRail {
                 what: "the wheel surface cannot be followed at the pressure centroid".to_string(),
             })?;
         let frame = Frame::new(origin, delta, tr[0], w.t, w.theta);
-        let moved = Lattice { x0: lat.x0 - xb, s0: lat.s0 - sb, ..lat };
+        let target = p.fine.unwrap_or(lat);
+        let moved = Lattice { x0: target.x0 - xb, s0: target.s0 - sb, ..target };
         let mut out = Working::new(rail, wheel, z, frame, moved, p.band)?;
         out.gap_at(z);
-        out.sol = p.sol;
+        if p.fine.is_some() {
+            out.warm = p
+                .sol
+                .filter(|s| !s.no_contact)
+                .map(|s| resample(&s.pressure, &lat, &moved, (xb, sb)))
+                .filter(|w| w.iter().any(|&v| v > 0.0));
+        } else {
+            out.sol = p.sol;
+        }
         out.region = p.region;
         Ok(out)
     }

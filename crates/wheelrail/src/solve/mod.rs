@@ -30,7 +30,9 @@
 //! **Frames.** A patch's frame starts at its region's centre ([`crate::search`]); after the
 //! normal solve it moves to the pressure centroid, with the pressure-weighted mean
 //! inclination of the rail surface as contact angle, unless it is there already
-//! ([`FRAME_ACCEPT`]); then the patch is solved again.
+//! ([`FRAME_ACCEPT`]); then the patch is solved again. Without a previous position to
+//! start from, that first solve runs on a lattice of twice the cell ([`COARSE_MIN_CELLS`]),
+//! and the frame is checked once more against the fine solution's centroid.
 //!
 //! **From one position to the next** ([`Cache`]): the planned normal operators; each
 //! patch's frame offset from its region's centre, its approach, its ratio of total to
@@ -517,5 +519,14 @@ pub const MEMORY_MATCH: f64 = 2e-3;
 /// Relative tolerances of the normal solves and the load in the first pass, before the
 /// frames move to the pressure centroids.
 pub const FIRST_PASS_TOLERANCE: f64 = 1e-5;
+/// The coarse first pass: without a previous position's patch to start from, the first
+/// pass (the height under the load and the pressure centroid that places the frame) runs on
+/// a lattice of cells twice as large each way, a quarter of the cells; the patch then moves
+/// to its lattice of the given cell size at that centroid, warm-started from the coarse
+/// pressure, and the frame is checked against the fine pressure centroid once more
+/// ([`FRAME_ACCEPT`]; moved and solved again if it is off). Only the frame and the starting
+/// height come from the coarse lattice: every reported number is the fine lattice's. A
+/// patch whose lattice has fewer cells than this along a side skips the coarse pass.
+pub const COARSE_MIN_CELLS: usize = 16;
 /// Trial heights of the vertical-load iteration, at most.
 const MAX_LOAD_ITERATIONS: usize = 40;

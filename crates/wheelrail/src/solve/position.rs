@@ -73,6 +73,28 @@ impl WheelRail {
             let predicted = !patches.is_empty() && patches.iter().all(|p| p.predicted);
             let mut z =
                 self.height(&mut patches, load, z_touch, z_start, predicted, cache, &mut info)?;
+            let coarse = patches.iter().any(|p| p.fine.is_some());
+            if coarse {
+                // The coarse first pass done: each coarse patch takes its lattice of the
+                // given cell size at its pressure centroid (where it has pressure), and the
+                // height is found again on the fine lattices, warm.
+                let tg = Instant::now();
+                let wheel = wheel0.at_height(z);
+                patches = patches
+                    .into_iter()
+                    .map(|p| {
+                        if p.fine.is_none() {
+                            return Ok(p);
+                        }
+                        let c = self.centroid(&rail, &p)?;
+                        info.frames_moved += usize::from(c.is_some());
+                        let c = c.unwrap_or((0.0, 0.0, p.frame.delta));
+                        self.refine(&rail, &wheel, z, p, c)
+                    })
+                    .collect::<Result<_>>()?;
+                info.geometry_seconds += tg.elapsed().as_secs_f64();
+                z = self.height(&mut patches, load, z_touch, z, true, cache, &mut info)?;
+            }
             patches.retain(|p| p.sol.as_ref().is_some_and(|s| !s.no_contact));
             let tg = Instant::now();
             let moved: Vec<Option<(f64, f64, f64)>> =
@@ -93,7 +115,7 @@ impl WheelRail {
                     .collect::<Result<_>>()?;
                 info.geometry_seconds += tg.elapsed().as_secs_f64();
                 z = self.height(&mut patches, load, z_touch, z, true, cache, &mut info)?;
-            } else if !predicted {
+            } else if !predicted && !coarse {
                 // The frames stand; the first pass's looser tolerances are tightened.
                 z = self.height(&mut patches, load, z_touch, z, true, cache, &mut info)?;
             }

@@ -29,6 +29,10 @@ pub(super) struct Working {
     pub(super) predicted: bool,
     /// A pressure to start the first solve from (the previous position's).
     pub(super) warm: Option<Vec<f64>>,
+    /// A coarse patch of the first pass: the lattice of the final cell size (in this frame)
+    /// that replaces its lattice when the frame moves to the pressure centroid
+    /// ([`COARSE_MIN_CELLS`]).
+    pub(super) fine: Option<Lattice>,
 }
 
 /// What a patch of one position hands to the next ([`Cache`]): where its frame lay relative
@@ -69,6 +73,26 @@ impl Memory {
     }
 }
 
+/// The pressure `p` of the lattice `from` sampled at the cell centres of `to`, whose
+/// coordinates are those of `from` shifted by `shift` (each cell takes the value of the
+/// cell of `from` it lies in; zero outside): a warm start on another lattice.
+pub(super) fn resample(p: &[f64], from: &Lattice, to: &Lattice, shift: (f64, f64)) -> Vec<f64> {
+    let mut out = vec![0.0; to.len()];
+    for j in 0..to.ns {
+        let jm = ((to.s(j) + shift.1 - from.s0) / from.hs).floor();
+        if jm < 0.0 || jm as usize >= from.ns {
+            continue;
+        }
+        for i in 0..to.nx {
+            let im = ((to.x(i) + shift.0 - from.x0) / from.hx).floor();
+            if im >= 0.0 && (im as usize) < from.nx {
+                out[j * to.nx + i] = p[jm as usize * from.nx + im as usize];
+            }
+        }
+    }
+    out
+}
+
 impl Working {
     /// The geometry of a patch with the wheel at height `wheel.z`.
     pub(super) fn new(
@@ -103,6 +127,7 @@ impl Working {
             region: (frame.origin.y, frame.origin.x, frame.delta),
             predicted: false,
             warm: None,
+            fine: None,
         })
     }
 

@@ -19,6 +19,11 @@ pub struct WheelRailOut {
     /// The given vertical wheel load (N), when force-controlled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vertical_load: Option<f64>,
+    /// What carries `vertical_load` (`load.vertical`): "normal" (the normal forces'
+    /// vertical components, `normal_vertical`) or "total" (the total vertical force,
+    /// `total_on_rail.fz`, creep forces included).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vertical: Option<&'static str>,
     /// The sum over the patches of the normal forces' vertical components (N).
     pub normal_vertical: f64,
     /// The contact patches, in the library's order.

@@ -182,6 +182,7 @@ static LOAD: Table = Table {
         f("friction", Kind::Num),
         f("sliding", Kind::Bool),
         f("moment", Kind::Qty("\"0.5 N m\"")),
+        f("vertical", Kind::Str(&["normal", "total"])),
         f("history", Kind::Table(&HISTORY)),
     ],
 };

@@ -8,7 +8,7 @@ use std::path::Path;
 use super::Reader;
 use crate::error::{ErrorKind, SceneError};
 use crate::raw::{Qty, RawGeometry, RawScene, SQty};
-use crate::scene::{ProfileFile, RailSide, WheelRail, WheelsetPosition};
+use crate::scene::{ProfileFile, RailSide, WheelLoadDefinition, WheelRail, WheelsetPosition};
 use crate::units::{parse_quantity, Dim};
 
 /// An angle: a number (rad) or a string with rad, mrad, urad or deg.
@@ -171,7 +171,33 @@ pub(super) fn wheel_rail(
             position.roll = angle(cx, q, "position.roll")?;
         }
     }
+    // What carries the vertical load: refused beside load.approach (no load to carry).
+    let l = raw.load.get_ref();
+    let vertical = match &l.vertical {
+        None => WheelLoadDefinition::Normal,
+        Some(v) => {
+            let hint = "vertical = \"normal\" (the default: the normal forces' vertical components carry load.normal) or \"total\" (the total vertical force, creep forces included, as CONTACT)";
+            let value =
+                cx.choice(v, "load.vertical", &["normal", "total"]).map_err(|e| e.hint(hint))?;
+            if l.approach.is_some() {
+                return Err(cx
+                    .err(
+                        ErrorKind::Schema,
+                        "load.vertical",
+                        Some(v.span()),
+                        "load.vertical says what carries the vertical wheel load load.normal; under load.approach there is no load to carry",
+                    )
+                    .hint("remove load.vertical, or give load.normal = \"10 kN\" instead of load.approach"));
+            }
+            if value == "total" {
+                WheelLoadDefinition::Total
+            } else {
+                WheelLoadDefinition::Normal
+            }
+        }
+    };
     Ok(WheelRail {
+        vertical,
         side,
         rail_profile,
         wheel_profile,
