@@ -226,6 +226,10 @@ pub struct FastProblem<'a> {
     /// The period of a periodic surface ([`FastProblem::with_periodic`]); `None`: an isolated
     /// contact (zero-padded FFT).
     pub(super) periodic: Option<PeriodicLattice>,
+    /// The problem is an increment from a converged state (a load-history step,
+    /// [`FastProblem::with_increment_start`]): once the load is met, its Newton steps keep it
+    /// without the product of a load-correcting start.
+    pub(super) increment: bool,
 }
 
 impl<'a> FastProblem<'a> {
@@ -261,6 +265,7 @@ impl<'a> FastProblem<'a> {
             config: FastConfig::default(),
             prescribed: None,
             periodic: None,
+            increment: false,
         })
     }
 
@@ -291,6 +296,17 @@ impl<'a> FastProblem<'a> {
         }
         self.prescribed = Some(u0);
         Ok(self)
+    }
+
+    /// Mark the problem as a small increment from a converged state (a load-history step:
+    /// the prescribed displacement carries the previous traction, the warm start is close).
+    /// After its first Newton step the load is met far inside the tolerance, and the later
+    /// steps keep it (no load correction, so no product for the PCG's start); the stopping
+    /// test is unchanged.
+    #[must_use]
+    pub(crate) fn with_increment_start(mut self) -> Self {
+        self.increment = true;
+        self
     }
 
     /// Solve on a periodic surface: the grid's elements are cells of the lattice `lattice`

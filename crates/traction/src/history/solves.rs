@@ -56,7 +56,7 @@ impl Ctx<'_> {
             fp = fp.with_directions(TractionDirections::Fixed(d.clone()))?;
         }
         if let Some(u0) = u0 {
-            fp = fp.with_prescribed_displacement(u0)?;
+            fp = fp.with_prescribed_displacement(u0)?.with_increment_start();
         }
         let mut last = Error::EmptyGrid { reason: "no start given" };
         for start in starts {

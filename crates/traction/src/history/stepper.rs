@@ -305,14 +305,16 @@ impl LoadHistory<'_> {
         let drot = if rotating { sol.rotation } else { 0.0 };
         let dw = 0.5 * ((f0.0 + f1.0) * sol.shift.0 + (f0.1 + f1.1) * sol.shift.1)
             + 0.5 * (m0 + m1) * drot;
-        // K q^n for the next step's prescribed displacement and the stored energy.
+        // K q^n for the next step's prescribed displacement and the stored energy: the
+        // solver's displacement is K q^n + u0 with u0 = -K q^(n-1) (the first step has
+        // none), so K q^n comes without another product.
         let (qx, qy): (Vec<f64>, Vec<f64>) = sol.traction.iter().copied().unzip();
-        let (mut ux, mut uy) = (vec![0.0; n], vec![0.0; n]);
-        self.op.apply(&qx, &qy, &mut ux, &mut uy, &mut self.scratch);
         let mut u2 = 0.0;
         for k in 0..n {
-            self.kq[k] = (ux[k], uy[k]);
-            u2 += qx[k] * ux[k] + qy[k] * uy[k];
+            let u = sol.displacement[k];
+            let kq = if self.virgin { u } else { (u.0 + self.kq[k].0, u.1 + self.kq[k].1) };
+            self.kq[k] = kq;
+            u2 += qx[k] * kq.0 + qy[k] * kq.1;
         }
         let e = (theta.cos(), theta.sin());
         let dot = |v: (f64, f64)| v.0 * e.0 + v.1 * e.1;
@@ -370,7 +372,7 @@ impl LoadHistory<'_> {
             regime: sol.regime,
             solves: tally.solves,
             newton_iterations: tally.newton,
-            products: tally.products + 1,
+            products: tally.products,
             residual: sol.info.residual.max(sol.info.load_residual),
             seconds: t0.elapsed().as_secs_f64(),
         });

@@ -148,14 +148,18 @@ impl Solver<'_, '_> {
         let modes = self.modes.clone();
         // Constraint row j at dof d: B_jd = m_j(x_k) . e_d.
         let mut red = Reducer::new(nd);
-        let brow = |d: &Dof| -> [f64; 3] {
-            let mut row = [0.0; 3];
-            for (j, m) in modes.iter().enumerate() {
-                let v = m.at(g.x[d.k as usize], g.y[d.k as usize]);
-                row[j] = v.0 * d.e.0 + v.1 * d.e.1;
-            }
-            row
-        };
+        // The constraint rows, evaluated once: the projection streams them at every CG step.
+        let rows: Vec<[f64; 3]> = dofs
+            .par_iter()
+            .map(|d| {
+                let mut row = [0.0; 3];
+                for (j, m) in modes.iter().enumerate() {
+                    let v = m.at(g.x[d.k as usize], g.y[d.k as usize]);
+                    row[j] = v.0 * d.e.0 + v.1 * d.e.1;
+                }
+                row
+            })
+            .collect();
         let k0 = self.k0;
         let minv: Vec<f64> = dofs
             .par_iter()
@@ -169,7 +173,7 @@ impl Solver<'_, '_> {
         // G^-1 b_j and W = B G^-1 B^T.
         let mut gb: Vec<Vec<f64>> = Vec::with_capacity(nm);
         for j in 0..nm {
-            let bj: Vec<f64> = dofs.par_iter().map(|d| brow(d)[j]).collect();
+            let bj: Vec<f64> = rows.par_iter().map(|row| row[j]).collect();
             let mut y = vec![0.0; nd];
             self.g_apply(dofs, &first, &minv, &bj, &mut y);
             gb.push(y);
@@ -178,7 +182,7 @@ impl Solver<'_, '_> {
         for i in 0..nm {
             for j in 0..nm {
                 let gj = &gb[j];
-                w[i][j] = red.sum(nd, |r| r.map(|k| brow(&dofs[k])[i] * gj[k]).sum());
+                w[i][j] = red.sum(nd, |r| r.map(|k| rows[k][i] * gj[k]).sum());
             }
         }
         // Symmetrise (G^-1 is symmetric up to rounding).
@@ -215,7 +219,7 @@ impl Solver<'_, '_> {
             let c = red.reduce(nd, |range| {
                 let mut c = [0.0; 3];
                 for k in range {
-                    let row = brow(&dofs[k]);
+                    let row = rows[k];
                     for (cj, rj) in c.iter_mut().zip(row) {
                         *cj += rj * yr[k];
                     }
@@ -235,7 +239,7 @@ impl Solver<'_, '_> {
                     let mut acc = [0.0; 3];
                     for (o, (rv, zv)) in rc.iter_mut().zip(zc.iter_mut()).enumerate() {
                         let i = c * REDUCE_CHUNK + o;
-                        let row = brow(&dofs[i]);
+                        let row = rows[i];
                         *rv -= row[0] * l[0] + row[1] * l[1] + row[2] * l[2];
                         let mut zi = yr[i];
                         for (j, gj) in gbr.iter().enumerate() {
@@ -257,10 +261,14 @@ impl Solver<'_, '_> {
             .into_par_iter()
             .map(|i| gb.iter().zip(&l0).map(|(gj, l)| l * gj[i]).sum())
             .collect();
-        let mut hx = vec![0.0; nd];
-        self.h_apply(dofs, &first, diag_d, &x, &mut hx);
-        let mut r: Vec<f64> = rhs.par_iter().zip(hx.par_iter()).map(|(a, b)| a - b).collect();
-        drop(hx);
+        // With b = 0 the start is x0 = 0 and its product is skipped.
+        let mut r: Vec<f64> = if b.iter().all(|v| *v == 0.0) {
+            rhs.to_vec()
+        } else {
+            let mut hx = vec![0.0; nd];
+            self.h_apply(dofs, &first, diag_d, &x, &mut hx);
+            rhs.par_iter().zip(hx.par_iter()).map(|(a, b)| a - b).collect()
+        };
         let mut z = vec![0.0; nd];
         let mut acc = [0.0; 3];
         let (mut rz, zz) =
