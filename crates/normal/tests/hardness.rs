@@ -400,6 +400,59 @@ fn periodic_rough_surface() {
     assert!(e <= tol::SAME && (high.approach / el.approach - 1.0).abs() <= tol::SAME);
 }
 
+/// Force control under the cap is one iteration with the force kept by projection (no
+/// secant on the approach: `approach_steps` 0), down to the hard plastic shares of the
+/// 1024² case (98 % of the contact at H there): on a 128² periodic rough surface, caps that
+/// leave from a third to nearly all of the contact plastic. Each solve is audited from a
+/// fresh product, and the approach-controlled capped solve at the approach found (the box
+/// problem, another path) gives the same force and pressure.
+#[test]
+fn force_control_by_projection_at_hard_plastic_shares() {
+    let (n, size) = (128, 1e-3);
+    let (g0, cell) = rough_periodic_gap(n, size, 5);
+    let pb0 = NormalProblem::new(
+        n,
+        n,
+        (cell, cell),
+        &g0,
+        [steel(), Material::rigid()],
+        Boundary::Periodic,
+    )
+    .unwrap()
+    .with_tolerance(tolerance(1e-10));
+    let mean = 300e6;
+    let f = mean * size * size;
+    let el = pb0.solve(NormalLoad::Force(f)).unwrap();
+    let mut shares = vec![];
+    for ratio in [0.5, 0.2, 0.08] {
+        let hard = ratio * el.peak_pressure;
+        let pb = pb0.clone().with_hardness(hard);
+        let s = pb.solve(NormalLoad::Force(f)).unwrap();
+        let worst = audit(&pb, &s, hard, &g0, Some(f));
+        let d = pb.solve(NormalLoad::Approach(s.approach)).unwrap();
+        let e = d.pressure.iter().zip(&s.pressure).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
+            / hard;
+        println!(
+            "cap {ratio} x the elastic peak: plastic share {:.3}, fraction {:.4}, {} it ({} \
+             coarse), {} approach steps, audit {worst:.1e}; approach control: force {:.1e}, \
+             pressure {e:.1e}",
+            s.plastic_fraction,
+            s.fraction,
+            s.info.iterations,
+            s.info.coarse_iterations,
+            s.info.approach_steps,
+            d.force / f - 1.0
+        );
+        assert_eq!(s.info.approach_steps, 0, "the projected iteration, not the secant");
+        assert!(worst <= 1e-9, "{worst}");
+        assert!(s.fraction >= mean / hard);
+        assert!((d.force / f - 1.0).abs() <= tol::SAME && e <= tol::SAME);
+        shares.push(s.plastic_fraction);
+    }
+    assert!(shares.windows(2).all(|w| w[1] > w[0]), "the plastic share grows: {shares:?}");
+    assert!(shares[shares.len() - 1] > 0.95, "a hard plastic share reached: {shares:?}");
+}
+
 /// A hardness that is not a positive finite number is refused.
 #[test]
 fn hardness_refused() {

@@ -1,4 +1,5 @@
-//! Force control under a hardness cap: a safeguarded secant on the approach over
+//! Force control under a hardness cap: the capped iteration with the force kept by
+//! projection, and, should that not converge, a safeguarded secant on the approach over
 //! approach-controlled capped solves, each warm-started from the one before (module docs of
 //! [`crate::solver`], "Hardness").
 
@@ -17,7 +18,32 @@ const MAX_APPROACH_STEPS: usize = 60;
 /// Relative tolerance of the elastic solve that gives a cold start its first approach.
 const START_TOLERANCE: f64 = 1e-3;
 
+/// The most steps of the projected iteration under a force before the secant takes over.
+const PROJECTED_ITERATIONS: usize = 400;
+
 impl NormalProblem<'_> {
+    /// Force control under the hardness: the capped iteration with the force kept by the
+    /// projection (module docs, "Hardness"); if that does not converge within
+    /// [`PROJECTED_ITERATIONS`] (or the problem's limit), the secant on the approach
+    /// ([`NormalProblem::run_capped`]) from a cold start, its counts added.
+    pub(super) fn run_capped_force(
+        &self,
+        op: &NormalOperator,
+        pf: f64,
+        tol: f64,
+        start: Start<'_>,
+    ) -> Result<(NormalSolution, bool)> {
+        let limit = self.max_iterations.min(PROJECTED_ITERATIONS);
+        match self.iterate(op, NormalLoad::Force(pf), tol, Some(pf), start, limit) {
+            Err(Error::NotConverged { iterations, .. }) => {
+                let (mut s, warm) = self.run_capped(op, pf, tol, Start::Cold)?;
+                s.info.iterations += iterations;
+                Ok((s, warm))
+            }
+            other => other,
+        }
+    }
+
     /// The force `pf` under the hardness: the approach $\delta$ at which the capped contact
     /// carries `pf`, found by a secant on $F(\delta)$ (continuous and non-decreasing),
     /// kept inside the bracket of the approaches tried (false position when the secant

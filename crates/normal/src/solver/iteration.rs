@@ -1,10 +1,11 @@
 //! The constrained conjugate-gradient iteration on one lattice (module docs of
 //! [`crate::solver`]).
 
-use super::passes::{in_order, rescale, BLOCK};
+use super::passes::{in_order, project_sum, rescale, BLOCK};
 use super::solution::NormalSolution;
 use super::{
-    Boundary, NormalLoad, NormalProblem, Preconditioner, DIRECT_CHANGES, REFRESH, SOLVER_NAME,
+    Boundary, NormalLoad, NormalProblem, Preconditioner, DIRECT_CHANGES, PROJECTION_SLACK, REFRESH,
+    SOLVER_NAME,
 };
 use crate::error::{Error, Result};
 use rayon::prelude::*;
@@ -23,8 +24,23 @@ impl NormalProblem<'_> {
         start: Start<'_>,
     ) -> Result<(NormalSolution, bool)> {
         if let (Some(_), Some(pf)) = (self.hardness, force) {
-            return self.run_capped(op, pf, tol, start);
+            return self.run_capped_force(op, pf, tol, start);
         }
+        self.iterate(op, load, tol, force, start, self.max_iterations)
+    }
+
+    /// The iteration itself, at most `max_iterations` steps. Under a cap and a force, the
+    /// force is kept by the projection onto the capped pressures of that force
+    /// ([`project_sum`]) instead of a rescaling.
+    pub(super) fn iterate(
+        &self,
+        op: &NormalOperator,
+        load: NormalLoad,
+        tol: f64,
+        force: Option<f64>,
+        start: Start<'_>,
+        max_iterations: usize,
+    ) -> Result<(NormalSolution, bool)> {
         let warm = !matches!(start, Start::Cold);
         let (nx, n) = (self.nx, self.nx * self.ny);
         let t0 = Instant::now();
@@ -67,7 +83,7 @@ impl NormalProblem<'_> {
                 p.par_iter_mut().zip(g0).for_each(|(p, g)| *p = ((d - g) / k0).max(0.0));
             }
         }
-        if let Some(pf) = force {
+        if let (Some(pf), false) = (force, capped) {
             if !rescale(&mut p, pf / area) {
                 // A zero warm start: begin uniform.
                 p.fill(1.0);
@@ -75,9 +91,12 @@ impl NormalProblem<'_> {
             }
         }
         if capped {
-            // Force control under a cap goes by the approach ([`NormalProblem::run_capped`]).
-            debug_assert!(force.is_none());
-            p.par_iter_mut().for_each(|p| *p = p.min(cap));
+            // Under a force, the nearest capped pressure of that force (a rescaling would
+            // move the plastic cells off the cap).
+            let fitted = force.is_some_and(|pf| project_sum(&mut p, cap, pf / area).is_some());
+            if !fitted {
+                p.par_iter_mut().for_each(|p| *p = p.min(cap));
+            }
         }
 
         let spectral = self.preconditioner == Preconditioner::Spectral;
@@ -147,6 +166,15 @@ impl NormalProblem<'_> {
             .fold(GapSums::EMPTY, GapSums::merge);
             delta = match load {
                 NormalLoad::Approach(d) => d,
+                NormalLoad::Force(_) if a.cells == 0 && a.max_plastic.is_finite() => {
+                    // Every pressed cell plastic: the approach that best closes the plastic
+                    // gaps without penetration elsewhere.
+                    if a.max_plastic <= a.min_out {
+                        a.max_plastic
+                    } else {
+                        0.5 * (a.max_plastic + a.min_out)
+                    }
+                }
                 NormalLoad::Force(_) => a.sum / a.cells.max(1) as f64,
             };
             res = a.residuals(delta, delta - gmin, sum_target);
@@ -160,7 +188,7 @@ impl NormalProblem<'_> {
                 stale = true;
                 continue;
             }
-            if iterations >= self.max_iterations {
+            if iterations >= max_iterations {
                 return Err(Error::NotConverged {
                     solver: SOLVER_NAME,
                     iterations,
@@ -358,15 +386,42 @@ impl NormalProblem<'_> {
             let sum = blocks.iter().fold(0.0, |a, b| a + b.sum);
             let changes: Vec<(usize, f64)> = blocks.into_iter().flat_map(|b| b.changes).collect();
             conjugate = true;
+            // Under a cap and a force: back to the force by the projection when the step
+            // has moved it off by more than PROJECTION_SLACK of the tolerance (the stop
+            // checks the force residual all the same); u then needs a full product.
+            let projected = match (force, capped) {
+                (Some(pf), true) => {
+                    let target = pf / area;
+                    (sum - target).abs() > PROJECTION_SLACK * tol * target && {
+                        // The cells off the contact at the gradient step's value (negative:
+                        // the nearest enter first if the pressed cells cannot carry the
+                        // force).
+                        p.par_iter_mut().zip(g.par_iter()).for_each(|(p, g)| {
+                            if *p == 0.0 {
+                                *p = tau_e * (delta - g).min(0.0);
+                            }
+                        });
+                        project_sum(&mut p, cap, target).is_some()
+                    }
+                }
+                _ => false,
+            };
             // Few changes: add their columns to u; many: a full product at the next check
             // (the same cost as correcting by one convolution, and exact).
-            let incremental = changes.len() <= direct;
+            let incremental = !projected && changes.len() <= direct;
             if incremental {
                 op.add_columns(&changes, &mut u);
             }
             stale = !incremental || iterations % REFRESH == 0;
             exact = false;
             match force {
+                Some(_) if capped => {
+                    if sum == 0.0 {
+                        // Everything left the contact (the projection spread the force
+                        // over all cells): start the directions again.
+                        conjugate = false;
+                    }
+                }
                 Some(pf) => {
                     if sum > 0.0 {
                         // Applied by the next step (or before the next product).
