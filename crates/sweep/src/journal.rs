@@ -2,12 +2,13 @@
 //! (`<stem>.partial.csv` beside the table) one by one, each written whole to the operating
 //! system before the next point's, so a sweep whose process is killed loses at most the
 //! points that were running. The journal is flushed to the disk (fsync) after a record when
-//! [`SYNC_INTERVAL`] has passed since its last flush, so a crash of the machine itself (a
-//! node that fails, a power cut) loses at most the points that were running and those that
-//! finished within that interval before it; points of a second or more are flushed one by
-//! one, as before, and a sweep of many short points does not wait for the disk after each
-//! (on a spinning or network disk a flush takes milliseconds, as long as a small point's
-//! solve). [`Sweep::run_journaled`]
+//! [`SYNC_INTERVAL`] has passed since its last flush, and by a flusher thread every
+//! [`SYNC_INTERVAL`] while records wait (so short points followed by a long one are not left
+//! unflushed while it runs), so a crash of the machine itself (a node that fails, a power
+//! cut) loses at most the points that were running and those that finished within that
+//! interval before it; points of a second or more are flushed one by one, as before, and a
+//! sweep of many short points does not wait for the disk after each (on a spinning or
+//! network disk a flush takes milliseconds, as long as a small point's solve). [`Sweep::run_journaled`]
 //! with `resume` reads the journal of an earlier run of the same sweep, runs only the points
 //! it lacks, and assembles the table in point order: no point is solved twice, none is lost,
 //! and the table is the one an uninterrupted run gives. A journal's torn last record (a kill
@@ -17,7 +18,7 @@
 use std::fs::{File, OpenOptions};
 use std::io::{Read as _, Seek as _, SeekFrom, Write as _};
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
+use std::sync::{Condvar, Mutex};
 use std::time::{Duration, Instant};
 
 use crate::{Cell, Kind, Shard, Sweep, Table, TableError};
@@ -152,37 +153,68 @@ impl Sweep {
         };
         let todo: Vec<usize> = shard.points(self.len()).filter(|&i| have[i].is_none()).collect();
         let resumed = shard.points(self.len()).count() - todo.len();
-        // The file and the time of its last flush to the disk.
-        let file = Mutex::new((file, Instant::now()));
+        let file = Mutex::new(Open { file, synced: Instant::now(), dirty: false });
         let failure: Mutex<Option<TableError>> = Mutex::new(None);
-        // Rows land in the order the points finish (not point order): each record names its
-        // point, and the records are appended whole, one at a time under the lock, so a kill
-        // can tear only the last; the file is flushed after a record once SYNC_INTERVAL has
-        // passed since its last flush (module docs). After a failed write nothing more is
-        // appended (a record after a torn one could be misread).
-        let rows = self.run_points(&todo, time_limit, |i, row| {
-            let append = || -> Result<(), TableError> {
-                if failure.lock().map_or(true, |f| f.is_some()) {
-                    return Ok(());
-                }
-                let text: Vec<String> = row.iter().map(Cell::to_text).collect();
-                let bytes = record(text.iter().map(String::as_str))?;
-                let mut guard = file.lock().map_err(|_| TableError("journal lock".into()))?;
-                let (f, synced) = &mut *guard;
-                f.write_all(&bytes).map_err(io)?;
-                if synced.elapsed() >= SYNC_INTERVAL {
-                    f.sync_data().map_err(io)?;
-                    *synced = Instant::now();
-                }
-                Ok(())
-            };
-            if let Err(e) = append() {
-                if let Ok(mut slot) = failure.lock() {
-                    slot.get_or_insert(e);
-                }
+        let fail = |e: TableError| {
+            if let Ok(mut slot) = failure.lock() {
+                slot.get_or_insert(e);
             }
-            done(i);
+        };
+        // Set when the points are done, to stop the flusher.
+        let finished = (Mutex::new(false), Condvar::new());
+        let rows = std::thread::scope(|scope| {
+            // The flusher: records written since the last flush reach the disk within
+            // SYNC_INTERVAL, even while a long point runs after short ones (module docs).
+            scope.spawn(|| {
+                let (lock, wake) = &finished;
+                let Ok(mut end) = lock.lock() else { return };
+                while !*end {
+                    end = match wake.wait_timeout(end, SYNC_INTERVAL) {
+                        Ok((end, _)) => end,
+                        Err(_) => return,
+                    };
+                    if let Err(e) = file.lock().map_err(|_| lock_err()).and_then(|mut j| j.sync(io))
+                    {
+                        fail(e);
+                    }
+                }
+            });
+            // Rows land in the order the points finish (not point order): each record names
+            // its point, and the records are appended whole, one at a time under the lock,
+            // so a kill can tear only the last; the file is flushed after a record once
+            // SYNC_INTERVAL has passed since its last flush, and by the flusher. After a
+            // failed write nothing more is appended (a record after a torn one could be
+            // misread).
+            let rows = self.run_points(&todo, time_limit, |i, row| {
+                let append = || -> Result<(), TableError> {
+                    if failure.lock().map_or(true, |f| f.is_some()) {
+                        return Ok(());
+                    }
+                    let text: Vec<String> = row.iter().map(Cell::to_text).collect();
+                    let bytes = record(text.iter().map(String::as_str))?;
+                    let mut j = file.lock().map_err(|_| lock_err())?;
+                    j.file.write_all(&bytes).map_err(io)?;
+                    j.dirty = true;
+                    if j.synced.elapsed() >= SYNC_INTERVAL {
+                        j.sync(io)?;
+                    }
+                    Ok(())
+                };
+                if let Err(e) = append() {
+                    fail(e);
+                }
+                done(i);
+            });
+            if let Ok(mut end) = finished.0.lock() {
+                *end = true;
+            }
+            finished.1.notify_all();
+            rows
         });
+        // The last records, before the table is assembled.
+        if let Err(e) = file.lock().map_err(|_| lock_err()).and_then(|mut j| j.sync(io)) {
+            fail(e);
+        }
         if let Some(e) = failure.into_inner().ok().flatten() {
             return Err(e);
         }
@@ -196,6 +228,31 @@ impl Sweep {
             solved: todo.len(),
         })
     }
+}
+
+/// The open journal: the file, when it was last flushed to the disk, and whether records
+/// were written since.
+struct Open {
+    file: File,
+    synced: Instant,
+    dirty: bool,
+}
+
+impl Open {
+    /// Flush the records written since the last flush to the disk (nothing when there are
+    /// none).
+    fn sync(&mut self, io: impl Fn(std::io::Error) -> TableError) -> Result<(), TableError> {
+        if self.dirty {
+            self.file.sync_data().map_err(io)?;
+            self.dirty = false;
+            self.synced = Instant::now();
+        }
+        Ok(())
+    }
+}
+
+fn lock_err() -> TableError {
+    TableError("journal lock".into())
 }
 
 /// Write `bytes` to `path` all or nothing: a temporary file beside it, flushed to the disk,
