@@ -211,10 +211,6 @@ impl Sweep {
             finished.1.notify_all();
             rows
         });
-        // The last records, before the table is assembled.
-        if let Err(e) = file.lock().map_err(|_| lock_err()).and_then(|mut j| j.sync(io)) {
-            fail(e);
-        }
         if let Some(e) = failure.into_inner().ok().flatten() {
             return Err(e);
         }
