@@ -36,6 +36,13 @@ fn tolerance(rel: f64) -> Tolerance {
 }
 
 /// Centre of cell k on an nx x ny lattice of side h centred on the origin.
+/// Steel under a rigid periodic rough surface `g0` on `n` x `n` cells, tolerance 1e-10.
+fn rough_problem(n: usize, cell: f64, g0: &[f64]) -> NormalProblem<'_> {
+    NormalProblem::new(n, n, (cell, cell), g0, [steel(), Material::rigid()], Boundary::Periodic)
+        .unwrap()
+        .with_tolerance(tolerance(1e-10))
+}
+
 fn centre(k: usize, n: usize, h: f64) -> (f64, f64) {
     let (i, j) = (k % n, k / n);
     ((i as f64 + 0.5 - 0.5 * n as f64) * h, (j as f64 + 0.5 - 0.5 * n as f64) * h)
@@ -341,16 +348,7 @@ fn hertz_sphere_under_approach_with_the_cap_near_the_peak() {
 fn periodic_rough_surface() {
     let (n, size) = (128, 1e-3);
     let (g0, cell) = rough_periodic_gap(n, size, 11);
-    let pb0 = NormalProblem::new(
-        n,
-        n,
-        (cell, cell),
-        &g0,
-        [steel(), Material::rigid()],
-        Boundary::Periodic,
-    )
-    .unwrap()
-    .with_tolerance(tolerance(1e-10));
+    let pb0 = rough_problem(n, cell, &g0);
     let mean = 300e6;
     let f = mean * size * size;
     let el = pb0.solve(NormalLoad::Force(f)).unwrap();
@@ -410,16 +408,7 @@ fn periodic_rough_surface() {
 fn force_control_by_projection_at_hard_plastic_shares() {
     let (n, size) = (128, 1e-3);
     let (g0, cell) = rough_periodic_gap(n, size, 5);
-    let pb0 = NormalProblem::new(
-        n,
-        n,
-        (cell, cell),
-        &g0,
-        [steel(), Material::rigid()],
-        Boundary::Periodic,
-    )
-    .unwrap()
-    .with_tolerance(tolerance(1e-10));
+    let pb0 = rough_problem(n, cell, &g0);
     let mean = 300e6;
     let f = mean * size * size;
     let el = pb0.solve(NormalLoad::Force(f)).unwrap();
