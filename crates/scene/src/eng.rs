@@ -109,9 +109,27 @@ pub fn eng_scaled(v: f64, scale: f64, unit: &str) -> String {
     eng(v, unit)
 }
 
+/// `v` as [`eng`] writes it, or in full (`1.0000001e3 N`) when that would read the same as
+/// one of `bounds`: a value refused against a bound must not print as the bound itself.
+pub fn eng_beside(v: f64, bounds: &[f64], unit: &str) -> String {
+    let found = eng(v, unit);
+    if bounds.iter().any(|&b| eng(b, unit) == found) {
+        let sep = if unit.is_empty() { "" } else { " " };
+        return format!("{v:e}{sep}{unit}");
+    }
+    found
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_value_beside_its_bound_is_written_in_full() {
+        assert_eq!(eng_beside(2.2e-6, &[1.986e-6], "N"), "2.200 µN");
+        assert_eq!(eng_beside(1.00001e3, &[1e3], "N"), "1.00001e3 N");
+        assert_eq!(eng_beside(0.50001, &[0.1, 0.5], ""), "5.0001e-1");
+    }
 
     #[test]
     fn common_prefixes() {

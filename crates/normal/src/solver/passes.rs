@@ -115,8 +115,8 @@ pub(super) fn project_sum(q: &mut [f64], cap: f64, target: f64) -> Option<f64> {
     let (mut lo, mut hi) = (qmin - cap, qmax);
     let mut mu = 0.0f64.clamp(lo, hi);
     let mut found = None;
+    let mut pc = piece(mu, q);
     for _ in 0..200 {
-        let pc = piece(mu, q);
         let s = value(pc, mu);
         if s >= target {
             lo = lo.max(mu);
@@ -141,7 +141,8 @@ pub(super) fn project_sum(q: &mut [f64], cap: f64, target: f64) -> Option<f64> {
             found = Some(next);
             break;
         }
-        mu = next;
+        // The piece of the next value is the one just evaluated.
+        (mu, pc) = (next, again);
     }
     let mu = found.unwrap_or(0.5 * (lo + hi));
     q.par_iter_mut().for_each(|q| {

@@ -15,7 +15,7 @@ use super::normal::ContactSolution;
 use super::outcome::{GridZones, RigidOut, Zones};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, Force, GridMethod};
-use stickslip_scene::eng::{eng, eng_scaled};
+use stickslip_scene::eng::{eng, eng_beside, eng_scaled};
 use stickslip_scene::{ErrorKind, SceneError, SurfaceBoundary};
 
 /// The grid solve of `method` under a force, a moment, or both.
@@ -161,12 +161,11 @@ fn grid_err(method: GridMethod, e: TractionError) -> SceneError {
             let msg = match load {
                 LoadKind::Force | LoadKind::Moment => {
                     let unit = if *load == LoadKind::Moment { "N m" } else { "N" };
-                    let (mut found, bound) = (eng(*requested, unit), eng(*capacity, unit));
-                    if found == bound {
-                        // rounds to the capacity: the load in full
-                        found = format!("{requested:e} {unit}");
-                    }
-                    format!("{load} {found} exceeds the friction capacity {bound}: the bodies slide (gross slip)")
+                    format!(
+                        "{load} {} exceeds the friction capacity {}: the bodies slide (gross slip)",
+                        eng_beside(*requested, &[*capacity], unit),
+                        eng(*capacity, unit)
+                    )
                 }
                 LoadKind::Combined => e.to_string(),
             };

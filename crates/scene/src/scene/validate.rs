@@ -12,7 +12,7 @@ use super::{
     Cycle, Elastic, Ellipse, FieldGrid, Geometry, History, HistoryControl, Indenter, Motion,
     NormalLoad, Outputs, Patch, PatchShape, Scene, SolverOptions, Substrate, MAX_GRID,
 };
-use crate::eng::eng;
+use crate::eng::{eng, eng_beside};
 use crate::error::{ErrorKind, Issue};
 
 mod interface;
@@ -56,11 +56,7 @@ fn finite(key: &str, v: f64) -> Result<f64, Issue> {
 /// ([`crate::eng`]); a value that rounds to a bound's four digits is written in full.
 fn outside(key: &str, v: f64, r: &Range) -> Issue {
     let (lo, hi) = (eng(r.lo, r.unit), eng(r.hi, r.unit));
-    let mut found = eng(v, r.unit);
-    if found == lo || found == hi {
-        let u = if r.unit.is_empty() { String::new() } else { format!(" {}", r.unit) };
-        found = format!("{v:e}{u}");
-    }
+    let found = eng_beside(v, &[r.lo, r.hi], r.unit);
     Issue::new(
         ErrorKind::OutOfRange,
         key,
