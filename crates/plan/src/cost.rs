@@ -142,13 +142,17 @@ pub(crate) fn estimate(
             evals += n * 30 * steps;
             secs += (30 * steps) as f64 * 1e-7 * (4 * cells) as f64;
         } else if steady {
-            // Exact steady rolling: a few Newton steps of tens of GMRES products each, one
-            // FFT product per GMRES step. Measured (2 cores, tolerance 1e-8, ellipse with
-            // creepage and spin): 1,264 elements 0.04-0.1 s, 7,860 elements 0.2-0.4 s,
-            // 31,428 elements 1.5-4 s, i.e. about 300 products of 1e-7 s per cell of the
-            // padded lattice.
-            evals += n * 300;
-            secs += 300.0 * 1e-7 * (4 * cells) as f64;
+            // Exact steady rolling: a few Newton steps of GMRES, one padded FFT product per
+            // GMRES step, from a nested start. Measured with `rolling_probe nx ny` (ellipse
+            // with creepage and spin, default tolerance): 95 products at 940 elements, 260 at
+            // 5,024 and 7,549, 426 at 30,176, about 100 (elements/1000)^0.45, and a fifth
+            // more in the shipped wheel-rail scene (295 at 5,024, a tighter residual); on one
+            // thread a product costs 2 to 4e-8 s per padded cell (0.83 ms at 80 x 80, 5.9 ms
+            // at 226 x 170, on a machine at load 6), taken as 2.5e-8 s plus 2e-5 s of GMRES
+            // work. The old model (300 products of 1e-7 s a cell) overestimated 3 to 7 times.
+            let products = 120.0 * (n as f64 / 1000.0).powf(0.45);
+            evals += n * products.ceil() as u64;
+            secs += products * (2e-5 + 2.5e-8 * (4 * cells) as f64);
         } else if fast {
             // Each Newton step takes tens of CG iterations, one FFT product each; the count
             // grows slowly with the grid (measured: see fast_seconds).
