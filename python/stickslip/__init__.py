@@ -114,9 +114,17 @@ def _numeric(x):
     return all(isinstance(y, (int, float)) and not isinstance(y, bool) for y in x)
 
 
+def _flags(x):
+    """True for a non-empty list of booleans."""
+    return isinstance(x, list) and bool(x) and all(isinstance(y, bool) for y in x)
+
+
 def _arrays(v, path=()):
     if isinstance(v, dict):
         return {k: _arrays(x, path + (k,)) for k, x in v.items()}
+    if _flags(v):
+        # Per-step flags (history.gross_slip): a bool array.
+        return _np.asarray(v, dtype=bool)
     if _numeric(v):
         # The surface stick map is 1 / 0 / -1 (int8 in result.json too).
         dtype = _np.int8 if path == ("surface", "stick") else _np.float64
@@ -128,7 +136,8 @@ def _arrays(v, path=()):
 
 class Result:
     """A run's result: the keys of result.json as attributes (and items), with every list
-    of numbers a NumPy array (float64; the stick map int8). ``json`` is result.json as
+    of numbers a NumPy array (float64; the stick map int8) and every list of flags a bool
+    array (a load history's ``gross_slip``). ``json`` is result.json as
     parsed, lists unchanged. ``field.values`` holds a 3D field's arrays, flat (reshape with
     ``field.shape``), also when result.json leaves them out because the box is large."""
 

@@ -60,7 +60,8 @@ class AuditError(SceneError):
 
 class Result:
     """A run's result: the keys of result.json as attributes and items (``r.contact.a``,
-    ``r["contact"]["a"]``), every list of numbers a NumPy array; nested tables are
+    ``r["contact"]["a"]``), every list of numbers a NumPy array (lists of flags bool
+    arrays); nested tables are
     ``Result`` too. ``json`` is result.json as parsed."""
 
     json: Optional[Dict[str, Any]]

@@ -37,6 +37,9 @@ def walk(js, res, path=""):
     ("sphere_as_surface", ["surface.p", "surface.gap", "surface.stick"]),
     ("sphere_subsurface_field", ["surface.qx", "field.values.von_mises"]),
     ("seed002_ex1_lp", ["surface.p", "surface.qx", "surface.stick"]),
+    ("sphere_fretting_history", ["history.tangential", "history.shift", "history.dissipated",
+                                 "surface.dissipation", "surface.slip_amplitude",
+                                 "surface.ruiz"]),
 ])
 def test_arrays_equal_result_json(tmp_path, name, grids):
     out = tmp_path / "out"
@@ -52,6 +55,13 @@ def test_arrays_equal_result_json(tmp_path, name, grids):
         assert isinstance(a, np.ndarray) and a.size > 1, g
     if "stick" in r.surface:
         assert r.surface.stick.dtype == np.int8
+    if "history" in r:
+        # Per-step flags are bool arrays; the path's surface maps are the .npy files written
+        # (result.json's maps are [i][j] at (x[i], y[j]), the .npy arrays (ny, nx)).
+        assert r.history.gross_slip.dtype == bool
+        assert r.history.gross_slip.shape == r.history.tangential.shape
+        for k in ("dissipation", "slip_amplitude", "ruiz"):
+            np.testing.assert_array_equal(r.surface[k], np.load(out / ("surface_%s.npy" % k)).T)
 
 
 def test_toml_text_and_path_give_the_same_result():
