@@ -178,7 +178,22 @@ impl Execute for Plan {
 /// A [`SceneError`] of kind [`ErrorKind::Solver`] (or [`ErrorKind::Impossible`] for a load a
 /// grid solver finds beyond the friction capacity) when a physics routine fails, or of kind
 /// [`ErrorKind::Audit`] when the result fails a check.
+///
+/// The run itself goes to a thread of rayon's pool (unless the caller is on one already,
+/// as a sweep's points are): the solvers' parallel loops are then split among the pool's
+/// threads by work stealing. Called from a thread outside the pool, each of those loops
+/// would be handed to the pool and waited for through a lock, a wake-up and a sleep every
+/// time: on a 64 x 64 lattice (thousands of short loops a second) a third of the run went
+/// into that hand-over.
 pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
+    if rayon::current_thread_index().is_some() {
+        execute_here(plan, opts)
+    } else {
+        rayon::scope(|_| execute_here(plan, opts))
+    }
+}
+
+fn execute_here(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
     let t0 = Instant::now();
     let mut cx = Ctx {
         ev: Evaluations::default(),
