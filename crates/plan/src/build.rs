@@ -552,11 +552,13 @@ fn rolling_step(
 }
 
 /// Transient 3D rolling (`[motion.transient]`): the creep force `load.tangential` along
-/// `load.direction`, the spin creepage, steps of one element length by the fast solver.
+/// `load.direction` or, when a longitudinal or lateral creepage is given, those creepages
+/// (the force then only acts in the shift at rest); the spin creepage; steps of one element
+/// length by the fast solver.
 fn transient_step(
     scene: &Scene,
     speed: f64,
-    spin: f64,
+    (longitudinal, lateral, spin): (f64, f64, f64),
     t: stickslip_scene::Transient,
 ) -> Result<Tangential, Issue> {
     if !matches!(scene.solver.method, Method::Auto | Method::Fast) {
@@ -579,6 +581,7 @@ fn transient_step(
             direction_deg: l.direction_deg,
             shift_first: t.start == stickslip_scene::TransientStart::Shift,
             distance: t.distance,
+            creepage: t.creepage_control.then_some((longitudinal, lateral)),
         }),
     }))
 }
@@ -711,8 +714,8 @@ fn contact_recipe(
         Motion::RollingCreepage { speed, longitudinal, lateral, spin, transient: None } => {
             Some(rolling_step(scene, body, speed, Creepage { longitudinal, lateral, spin })?)
         }
-        Motion::RollingCreepage { speed, spin, transient: Some(t), .. } => {
-            Some(transient_step(scene, speed, spin, t)?)
+        Motion::RollingCreepage { speed, longitudinal, lateral, spin, transient: Some(t) } => {
+            Some(transient_step(scene, speed, (longitudinal, lateral, spin), t)?)
         }
         _ => None,
     };

@@ -424,8 +424,8 @@ pub struct RollingStep {
     /// Relative tolerance of the exact solver's residual (unused by FASTSIM and Polach).
     pub tolerance: f64,
     /// Rolled in steps from a start state instead of solved steady (method
-    /// `RollingMethod::Transient`; the creepages' longitudinal and lateral parts are then
-    /// unknowns, the creep force is given).
+    /// `RollingMethod::Transient`; under a creep force the creepages' longitudinal and lateral
+    /// parts are unknowns, under prescribed creepages the force is).
     pub transient: Option<TransientRecipe>,
 }
 
@@ -438,8 +438,12 @@ pub struct TransientRecipe {
     pub direction_deg: f64,
     /// First a step at rest under the force (a Cattaneo shift), then rolling.
     pub shift_first: bool,
-    /// Distance rolled (m); None: two contact lengths along x.
+    /// Distance rolled (m); None: two contact lengths along x under a force, ten under
+    /// prescribed creepages (the start's memory decays more slowly there).
     pub distance: Option<f64>,
+    /// Rolling at these creepages $(\xi, \eta)$ instead of under `force` (which then acts only
+    /// in the shift at rest, when `shift_first`): the creep force is found at every step.
+    pub creepage: Option<(f64, f64)>,
 }
 
 /// Which grid solver.

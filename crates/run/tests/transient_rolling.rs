@@ -131,8 +131,13 @@ fn transient_rolling_refusals_name_their_keys() {
         assert!(e.hint.is_some(), "{e}");
     };
     refused(
-        scene(16, "creepage = { longitudinal = 1e-3 }\n[motion.transient]\n", T, "auto"),
-        "motion.creepage.longitudinal",
+        scene(
+            16,
+            "creepage = { longitudinal = 1e-3 }\n[motion.transient]\nstart = \"rest\"\n",
+            T,
+            "auto",
+        ),
+        "load.tangential",
     );
     refused(scene(16, "[motion.transient]\n", T, "fastsim"), "solver.method");
     refused(
@@ -144,4 +149,65 @@ fn transient_rolling_refusals_name_their_keys() {
         scene(16, "[motion.transient]\ndistance = \"1 km\"\n", T, "auto"),
         "motion.transient.distance",
     );
+}
+
+/// Rolling from rest at a prescribed creepage (the creep force found at every step): after
+/// the default ten contact lengths the exact steady solver at the same creepage (a different
+/// algorithm) carries the same creep force and traction; along the way each step meets the
+/// creepage and the force grows towards the steady one.
+#[test]
+fn prescribed_creepage_rolls_into_the_steady_creep_force() {
+    let xi = -2e-4;
+    let motion =
+        format!("creepage = {{ longitudinal = {xi:e} }}\n[motion.transient]\nstart = \"rest\"\n");
+    let out = solve(&scene(32, &motion, 0.0, "auto")).unwrap();
+    let h = history(&out);
+    let last = h.distance.len() - 1;
+    let a = out.contact.a;
+    assert!(
+        (h.distance[last] - 20.0 * a).abs() <= 0.02 * 20.0 * a,
+        "ten contact lengths by default"
+    );
+    for (k, c) in h.creepage_longitudinal.iter().enumerate() {
+        assert!((c - xi).abs() <= 1.1e-9 * xi.abs(), "step {k}: creepage {c} against {xi}");
+    }
+    let steady =
+        solve(&scene(32, &format!("creepage = {{ longitudinal = {xi:e} }}"), 0.0, "fast")).unwrap();
+    let fx = steady.forces.fx.unwrap();
+    let force_err = (h.fx[last] - fx).abs() / (F * P);
+    let (SurfaceOut::Grid { p, qx, qy, .. }, SurfaceOut::Grid { qx: sx, qy: sy, .. }) =
+        (&out.surface, &steady.surface)
+    else {
+        panic!("lattices")
+    };
+    let p0 = p.iter().flatten().copied().fold(0.0, f64::max);
+    let mut worst = 0.0f64;
+    for i in 0..qx.len() {
+        for j in 0..qx[i].len() {
+            worst = worst.max((qx[i][j] - sx[i][j]).hypot(qy[i][j] - sy[i][j]) / (F * p0));
+        }
+    }
+    let n_len = (last + 1) / 10;
+    println!(
+        "xi = {xi:e}: transient Fx = {:.6} N after {} steps, steady {fx:.6} N ({force_err:.2e} of fP); traction max diff {worst:.2e} f p0; Fx after 1, 2, 5 lengths {:.4}, {:.4}, {:.4} N",
+        h.fx[last],
+        last + 1,
+        h.fx[n_len - 1],
+        h.fx[2 * n_len - 1],
+        h.fx[5 * n_len - 1],
+    );
+    // What ten lengths leave of the start: at this light creepage (most of the contact
+    // sticks) the force's distance to the steady one falls by about 4.5 per length (2.8,
+    // 0.61 and 6.6e-3 N after 1, 2 and 5 lengths), so ten lengths leave about 3e-6 N
+    // (measured 2.3e-8 of fP) and 1.8e-7 of f p0 in the traction; the solvers' own
+    // tolerances (1e-10) are far below. Bounds 1e-7 and 1e-6: the decay, not a solver
+    // error, sets them; the force's approach must be monotone.
+    assert!(force_err < 1e-7, "{force_err:.3e}");
+    assert!(worst < 1e-6, "{worst:.3e}");
+    for w in (1..=10).map(|k| h.fx[k * n_len - 1]).collect::<Vec<_>>().windows(2) {
+        assert!(
+            (w[1] - fx).abs() < (w[0] - fx).abs(),
+            "the force approaches the steady one: {w:?}"
+        );
+    }
 }

@@ -445,7 +445,9 @@ pub(crate) struct RawMotion {
     #[schemars(with = "Option<Qty>")]
     pub pitch_rate: Option<SQty>,
     /// 3D rolling solved in time steps from a start state (transient rolling): the creep
-    /// force is load.tangential, the creepages follow from it.
+    /// force is load.tangential and the creepages follow from it, or, when
+    /// creepage.longitudinal or lateral is given, the contact rolls at those creepages and
+    /// the force follows.
     #[schemars(with = "Option<RawTransient>")]
     pub transient: Option<Spanned<RawTransient>>,
 }

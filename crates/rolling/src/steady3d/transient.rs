@@ -97,6 +97,11 @@ pub struct TransientRolling {
     steps: usize,
     rolled_steps: usize,
     last_info: RollingInfo,
+    /// Creep force on body 1 after the last step.
+    force: (f64, f64),
+    /// The last secant estimate of d(shift)/d(force) of a creepage-controlled step (row-major
+    /// 2 x 2), carried to the next step.
+    jacobian: Option<[f64; 4]>,
 }
 
 impl TransientRolling {
@@ -149,6 +154,8 @@ impl TransientRolling {
                 products: 0,
                 residual: 0.0,
             },
+            force: (0.0, 0.0),
+            jacobian: None,
         })
     }
 
@@ -197,6 +204,118 @@ impl TransientRolling {
                 return Err(Error::OutOfDomain { name, value: v, allowed: "finite" });
             }
         }
+        let sol = self.trial(force, spin)?;
+        Ok(self.commit(&sol, spin.is_some(), self.grid.hx))
+    }
+
+    /// Roll one element length $h_x$ at the prescribed creepages $(\xi, \eta)$ and spin $\phi$
+    /// (1/m): the creep force that makes the step's rigid slip $h_x(\xi, \eta)$ is found by a
+    /// secant (Broyden) iteration on the force, each trial a warm fast solve of the step
+    /// (the step is the force-controlled one of [`TransientRolling::roll`], whose rigid shift
+    /// grows monotonically with the force). The first creepage-controlled step estimates
+    /// d(shift)/d(force) by two extra solves; later steps start from the last step's force
+    /// and estimate, so near the steady state a step costs one or two solves. The iteration
+    /// stops when the creepages are met to $10^{-9}$ of the larger of $|(\xi, \eta)|$ and
+    /// $10^{-3}\,f\bar p\,(1/G_1 + 1/G_2)$ ($\bar p$ the mean pressure).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for non-finite creepages or spin, or for creepages that drive
+    /// the contact into full sliding (the creep force would reach $f\sum_kP_k$: the force
+    /// cannot be prescribed there); [`Error::NotConverged`] after 40 trials; the fast
+    /// solver's errors as in [`TransientRolling::roll`]. After an error the state is that of
+    /// the last solved step.
+    pub fn roll_at_creepage(&mut self, creepage: (f64, f64), spin: f64) -> Result<TransientStep> {
+        for (name, v) in [
+            ("longitudinal creepage", creepage.0),
+            ("lateral creepage", creepage.1),
+            ("spin creepage", spin),
+        ] {
+            if !v.is_finite() {
+                return Err(Error::OutOfDomain { name, value: v, allowed: "finite" });
+            }
+        }
+        let h = self.grid.hx;
+        let target = (creepage.0 * h, creepage.1 * h);
+        let cap = self.friction * self.grid.total_normal_force();
+        let mut force = self.force;
+        let mut sol = self.trial(force, Some(spin))?;
+        let mut r = (sol.shift.0 - target.0, sol.shift.1 - target.1);
+        let mut j = match self.jacobian {
+            Some(j) => j,
+            None => {
+                // Central differences would cost four solves; forward ones at a hundredth
+                // of the capacity (in the direction away from it) are enough for a start.
+                let mut j = [0.0; 4];
+                for c in 0..2 {
+                    let d = 1e-2 * cap * if [force.0, force.1][c] > 0.0 { -1.0 } else { 1.0 };
+                    let f2 = if c == 0 { (force.0 + d, force.1) } else { (force.0, force.1 + d) };
+                    let s2 = self.trial(f2, Some(spin))?;
+                    j[c] = (s2.shift.0 - sol.shift.0) / d;
+                    j[2 + c] = (s2.shift.1 - sol.shift.1) / d;
+                }
+                j
+            }
+        };
+        // The creepage scale: f times the mean pressure over the shear modulus of the pair,
+        // as a rigid slip per step.
+        let contact = self.grid.pressure.iter().filter(|p| **p > 0.0).count().max(1) as f64;
+        let mean_p = self.grid.total_normal_force() / (contact * self.grid.hx * self.grid.hy);
+        let compliance: f64 =
+            self.bodies.iter().filter(|b| !b.is_rigid()).map(|b| 1.0 / b.shear_modulus()).sum();
+        let scale = h * self.friction * mean_p * compliance;
+        let tol = 1e-9 * target.0.hypot(target.1).max(1e-3 * scale);
+        for _ in 0..40 {
+            if r.0.hypot(r.1) <= tol {
+                self.jacobian = Some(j);
+                return Ok(self.commit(&sol, true, h));
+            }
+            let det = j[0] * j[3] - j[1] * j[2];
+            if !(det.is_finite() && det != 0.0) {
+                break;
+            }
+            let mut df = ((-r.0 * j[3] + r.1 * j[1]) / det, (r.0 * j[2] - r.1 * j[0]) / det);
+            // Stay inside the friction disc: at most half way to its edge per trial.
+            let next = (force.0 + df.0, force.1 + df.1);
+            let limit = 0.5 * (cap + force.0.hypot(force.1));
+            if next.0.hypot(next.1) > limit {
+                let room = cap - force.0.hypot(force.1);
+                if room <= 1e-9 * cap {
+                    return Err(Error::OutOfDomain {
+                        name: "creepage (the creep force would reach f P: full sliding)",
+                        value: creepage.0.hypot(creepage.1),
+                        allowed: "creepages that leave part of the contact sticking",
+                    });
+                }
+                let t = 0.5 * room / df.0.hypot(df.1);
+                df = (df.0 * t, df.1 * t);
+            }
+            force = (force.0 + df.0, force.1 + df.1);
+            let s2 = self.trial(force, Some(spin))?;
+            let r2 = (s2.shift.0 - target.0, s2.shift.1 - target.1);
+            // Broyden's update: J += (dr - J df) df^T / |df|^2.
+            let dr = (r2.0 - r.0, r2.1 - r.1);
+            let jd = (j[0] * df.0 + j[1] * df.1, j[2] * df.0 + j[3] * df.1);
+            let nn = df.0 * df.0 + df.1 * df.1;
+            if nn > 0.0 {
+                j[0] += (dr.0 - jd.0) * df.0 / nn;
+                j[1] += (dr.0 - jd.0) * df.1 / nn;
+                j[2] += (dr.1 - jd.1) * df.0 / nn;
+                j[3] += (dr.1 - jd.1) * df.1 / nn;
+            }
+            sol = s2;
+            r = r2;
+        }
+        Err(Error::NotConverged {
+            solver: "transient rolling at prescribed creepages (secant on the creep force)",
+            iterations: 40,
+            residual: r.0.hypot(r.1) / target.0.hypot(target.1).max(1e-3 * scale),
+            tolerance: 1e-9,
+        })
+    }
+
+    /// Solve a step under `force` (and `spin` when rolling) from the current state, without
+    /// taking it.
+    fn trial(&mut self, force: (f64, f64), spin: Option<f64>) -> Result<FastSolution> {
         let m = self.grid.len();
         let h = self.grid.hx;
         // u0 = u^{n-1} at the element the material came from (the fast solver's K(-q) is
@@ -231,7 +350,7 @@ impl TransientRolling {
             ) => fp.solve_with(&self.op, &mut self.scratch).map_err(Error::Tangential)?,
             Err(e) => return Err(Error::Tangential(e)),
         };
-        Ok(self.commit(&sol, spin.is_some(), h))
+        Ok(sol)
     }
 
     fn commit(&mut self, sol: &FastSolution, rolled: bool, h: f64) -> TransientStep {
@@ -246,6 +365,7 @@ impl TransientRolling {
         self.state.clone_from(&sol.state);
         self.slip.clone_from(&sol.slip);
         self.rolled = rolled;
+        self.force = (-sol.resultant.0, -sol.resultant.1);
         self.steps += 1;
         if rolled {
             self.rolled_steps += 1;

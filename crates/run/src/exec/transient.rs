@@ -1,12 +1,15 @@
 //! Stage 2 of a 3D contact rolled in time steps (`[motion.transient]`): from rest, or from a
 //! Cattaneo shift under the creep force, the contact rolls one element length per step under
 //! that force and the spin creepage (`stickslip_rolling::steady3d::TransientRolling`); the
-//! creepages that carry the force are found at every step. Each step goes into `history`
-//! (`control` = "rolling"); the final state fills the lattice as a steady rolling stage does.
+//! creepages that carry the force are found at every step. When the longitudinal or lateral
+//! creepage is given instead, the contact rolls at those creepages and the creep force is
+//! found at every step. Each step goes into `history` (`control` = "rolling"); the final
+//! state fills the lattice as a steady rolling stage does.
 //!
-//! After the material that was in the contact at the start has rolled out of it (one
-//! contact length), the state is the steady one; by default the contact rolls two contact
-//! lengths (docs/load-histories.md, "Transient rolling").
+//! Under a creep force the state is the steady one after about two contact lengths (the
+//! default distance); under prescribed creepages the start's memory decays more slowly (by 4
+//! to 9 per contact length), so the default is ten lengths (docs/load-histories.md,
+//! "Transient rolling").
 
 use stickslip_rolling::steady3d::TransientRolling;
 use stickslip_rolling::Error as RollingError;
@@ -55,7 +58,8 @@ pub(crate) fn solve(
 ) -> Result<(TangentialOut, HistoryOut), SceneError> {
     let grid = &n.grid;
     let h = grid.hx;
-    let distance = tr.distance.unwrap_or(4.0 * n.ax);
+    let lengths = if tr.creepage.is_some() { 10.0 } else { 2.0 };
+    let distance = tr.distance.unwrap_or(2.0 * lengths * n.ax);
     let rolls = (distance / h).round().max(1.0);
     if rolls > MAX_STEPS as f64 {
         return Err(SceneError::new(
@@ -111,8 +115,12 @@ pub(crate) fn solve(
     for k in 0..total {
         cx.progress("rolling", k, total);
         let at_rest = tr.shift_first && k == 0;
-        let s = if at_rest { problem.shift(tr.force) } else { problem.roll(tr.force, spin) }
-            .map_err(|e| step_err(e, k))?;
+        let s = match (at_rest, tr.creepage) {
+            (true, _) => problem.shift(tr.force),
+            (false, Some(c)) => problem.roll_at_creepage(c, spin),
+            (false, None) => problem.roll(tr.force, spin),
+        }
+        .map_err(|e| step_err(e, k))?;
         let along = s.shift.0 * e.0 + s.shift.1 * e.1;
         shift += along;
         dissipated += s.dissipated;
@@ -156,12 +164,13 @@ pub(crate) fn solve(
     let zones = super::roll3d::fill_lattice(lat, &sol, step.speed);
     let last = hist.creepage_longitudinal.len() - 1;
     cx.notes.push(format!(
-        "transient rolling on {} elements: {} steps ({}{} rolled in steps of {}), {} Newton steps, {} FFT products, largest residual {:.2e}; final creepages xi = {}, eta = {} under Fx = {}, Fy = {}; energy dissipated {}",
+        "transient rolling on {} elements: {} steps ({}{} rolled in steps of {}{}), {} Newton steps, {} FFT products, largest residual {:.2e}; final creepages xi = {}, eta = {} under Fx = {}, Fy = {}; energy dissipated {}",
         grid.len(),
         total,
         if tr.shift_first { "a Cattaneo shift at rest, then " } else { "" },
         eng(hist.distance[last], "m"),
         eng(h, "m"),
+        if tr.creepage.is_some() { " at the prescribed creepages" } else { " under the creep force" },
         iterations,
         products,
         residual,

@@ -593,13 +593,18 @@ pub enum Motion {
 
 /// Transient 3D rolling (`[motion.transient]`): the contact rolls in steps of one element
 /// length under the creep force `load.tangential` (along `load.direction`, on the indenter)
-/// and the spin creepage, from `start`.
+/// or, when `motion.creepage` gives the longitudinal or lateral creepage, at those
+/// creepages; the spin creepage with either; from `start`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Transient {
     /// The state the rolling starts from.
     pub start: TransientStart,
-    /// Distance rolled (m); None: two contact lengths along x.
+    /// Distance rolled (m); None: two contact lengths along x under a creep force, ten under
+    /// prescribed creepages.
     pub distance: Option<f64>,
+    /// The longitudinal or lateral creepage is given: the contact rolls at the creepages
+    /// (the creep force, if any, acts only in the shift at rest).
+    pub creepage_control: bool,
 }
 
 /// Where transient rolling starts.

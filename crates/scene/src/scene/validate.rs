@@ -733,9 +733,12 @@ fn motion(scene: &Scene) -> Result<(), Issue> {
             if let Some(d) = t.distance {
                 within("motion.transient.distance", d, &ranges::LENGTH)?;
             }
-            if longitudinal != 0.0 || lateral != 0.0 {
-                return Err(Issue::new(ErrorKind::Schema, "motion.creepage", "longitudinal or lateral creepage given with [motion.transient]")
-                    .hint("in transient rolling the creepages follow from the creep force load.tangential; only the spin is prescribed"));
+            if t.creepage_control
+                && scene.load.tangential != 0.0
+                && t.start == crate::TransientStart::Rest
+            {
+                return Err(Issue::new(ErrorKind::Schema, "load.tangential", "both a creep force (load.tangential) and creepages (motion.creepage) are prescribed for rolling from rest")
+                    .hint("give either the creep force (the creepages follow) or the longitudinal and lateral creepages (the force follows); with start = \"shift\" the force acts in the shift at rest and the creepages in the rolling"));
             }
             if scene.load.history.is_some() || scene.load.sliding || scene.load.moment != 0.0 {
                 return Err(Issue::new(ErrorKind::Unsupported, "motion.transient", "transient rolling takes a constant creep force (load.tangential, load.direction) and the spin; a load path, sliding or a moment are not solved with it in this version")

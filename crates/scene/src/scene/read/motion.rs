@@ -103,7 +103,7 @@ pub(super) fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Mot
                             .err(ErrorKind::Schema, "motion.creep", Some(c.span()), "`creep` is given with [motion.transient]")
                             .hint("transient rolling is 3D: its creep force is load.tangential, its spin motion.creepage.spin; remove `creep`"));
                     }
-                    Some(Transient { start, distance })
+                    Some(Transient { start, distance, creepage_control: false })
                 }
             };
             if transient.is_some() && mr.creepage.is_none() {
@@ -128,15 +128,12 @@ pub(super) fn motion(cx: &Reader<'_>, raw: &RawScene, wheel: bool) -> Result<Mot
                 }
                 let [longitudinal, lateral, spin] = creepages(cx, cr)?;
                 let c = cr.get_ref();
-                if transient.is_some() {
-                    for (key, v) in [("longitudinal", &c.longitudinal), ("lateral", &c.lateral)] {
-                        if let Some(v) = v {
-                            return Err(cx
-                                .err(ErrorKind::Schema, &format!("motion.creepage.{key}"), Some(v.span()), format!("a {key} creepage is given with [motion.transient]"))
-                                .hint("in transient rolling the creepages follow from the creep force load.tangential (with load.direction); only the spin is prescribed: remove it"));
-                        }
-                    }
-                }
+                // Transient rolling at prescribed creepages when either is given (zero
+                // included: free rolling with spin); otherwise under the creep force.
+                let transient = transient.map(|t| Transient {
+                    creepage_control: c.longitudinal.is_some() || c.lateral.is_some(),
+                    ..t
+                });
                 return Ok(Motion::RollingCreepage {
                     speed,
                     longitudinal,
