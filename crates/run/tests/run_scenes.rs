@@ -325,6 +325,24 @@ fn check(name: &str, scene: &Scene, out: &Outcome) -> Vec<String> {
                 1e-3,
             );
         }
+        "transient_rolling_creepage.toml" => {
+            // A Cattaneo shift under 75 N (Mindlin's shift), then every rolling step at the
+            // prescribed creepage, the creep force found; after the default ten contact
+            // lengths the force has settled (crates/run/tests/transient_rolling.rs compares a
+            // run from rest with the steady solver).
+            let h = out.history.as_ref().unwrap();
+            let (e, nu, p, f, t) = (210e9, 0.3, 500.0, 0.3, 75.0);
+            let g = e / (2.0 * (1.0 + nu));
+            let delta = 3.0 * f * p * (2.0 - nu) / (8.0 * g * c.a)
+                * (1.0 - (1.0f64 - t / (f * p)).powf(2.0 / 3.0));
+            expect("shift at rest (Mindlin)", h.shift[0].abs(), delta, 0.02);
+            expect("force of the shift", h.tangential[0], t, 1e-9);
+            for x in &h.creepage_longitudinal[1..] {
+                expect("creepage prescribed", *x, -1e-3, 1.1e-9);
+            }
+            let n = h.fx.len() - 1;
+            expect("creep force settled (last two steps)", h.fx[n], h.fx[n - 1], 1e-7);
+        }
         "sphere_fretting_history.toml" => {
             // The load path's two loops against Mindlin-Deresiewicz's energy per cycle
             // (FORMULAS.md E), both bodies.
