@@ -43,6 +43,23 @@ pub use operator::{
 };
 pub use stickslip_quad::Tolerance;
 
+/// Run `f` on a thread of rayon's global pool and return its result (on a pool thread
+/// already: run it in place).
+///
+/// The lattice operators and the solvers built on them split their loops with rayon. Called
+/// from a thread outside the pool, each such loop is handed to the pool and waited for
+/// (a lock, a wake-up and a sleep every time); on lattices of a few thousand cells, whose
+/// loops take microseconds, that hand-over costs more than the loops. A solver's entry
+/// point wraps its whole solve in this function, so that its loops are split by work
+/// stealing inside the pool instead: one hand-over per solve.
+pub fn on_pool<R: Send>(f: impl FnOnce() -> R + Send) -> R {
+    if rayon::current_thread_index().is_some() {
+        f()
+    } else {
+        rayon::scope(|_| f())
+    }
+}
+
 /// Lateral boundary of a lattice, shared by every operator, solver and field on it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Boundary {

@@ -429,6 +429,11 @@ impl SteadyRolling {
     /// [`Error::NotConverged`] if the residual has not met the tolerance within the iteration
     /// budget (the residual reached is given); as [`Creepage`] validation.
     pub fn solve(&self, creep: &Creepage) -> Result<RollingSolution> {
+        // On rayon's pool: the solve's loops are then split without a hand-over each.
+        stickslip_lattice::on_pool(|| self.solve_here(creep))
+    }
+
+    fn solve_here(&self, creep: &Creepage) -> Result<RollingSolution> {
         creep.validate()?;
         let g: Vec<f64> =
             self.contact.pressure.iter().map(|p| self.friction * p.max(0.0)).collect();

@@ -204,7 +204,7 @@ impl TransientRolling {
                 return Err(Error::OutOfDomain { name, value: v, allowed: "finite" });
             }
         }
-        let sol = self.trial(force, spin)?;
+        let sol = stickslip_lattice::on_pool(|| self.trial(force, spin))?;
         Ok(self.commit(&sol, spin.is_some(), self.grid.hx))
     }
 
@@ -225,6 +225,10 @@ impl TransientRolling {
     /// solver's errors as in [`TransientRolling::roll`]. After an error the state is that of
     /// the last solved step.
     pub fn roll_at_creepage(&mut self, creepage: (f64, f64), spin: f64) -> Result<TransientStep> {
+        stickslip_lattice::on_pool(|| self.roll_at_creepage_here(creepage, spin))
+    }
+
+    fn roll_at_creepage_here(&mut self, creepage: (f64, f64), spin: f64) -> Result<TransientStep> {
         for (name, v) in [
             ("longitudinal creepage", creepage.0),
             ("lateral creepage", creepage.1),

@@ -186,11 +186,7 @@ impl Execute for Plan {
 /// time: on a 64 x 64 lattice (thousands of short loops a second) a third of the run went
 /// into that hand-over.
 pub fn execute(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
-    if rayon::current_thread_index().is_some() {
-        execute_here(plan, opts)
-    } else {
-        rayon::scope(|_| execute_here(plan, opts))
-    }
+    stickslip_lattice::on_pool(|| execute_here(plan, opts))
 }
 
 fn execute_here(plan: &Plan, opts: &RunOptions<'_>) -> Result<Outcome, SceneError> {
