@@ -3,7 +3,7 @@
 
 use super::path::{LoadPath, PathControl};
 use super::problem::{HistoryOutcome, HistoryProblem, StepTarget};
-use super::stepper::LoadHistory;
+use super::stepper::{LoadHistory, StepTrial};
 use crate::error::{Error, Result};
 use crate::fast::WarmStart;
 use stickslip_halfspace::material::dundurs_beta;
@@ -232,25 +232,32 @@ impl HistoryProblem<'_> {
                     _ => None,
                 };
                 let trial = h.trial(pr, target, c.as_deref(), None).map_err(wrap)?;
-                h.accept(trial, 1, 0.0);
+                h.accept(trial, 1, (0.0, 0.0));
             } else {
                 let mut used = h.traction().to_vec();
                 let mut warm: Option<WarmStart> = None;
                 let mut last = f64::INFINITY;
                 let mut done = false;
+                let mut earlier: Option<StepTrial> = None;
                 for pass in 1..=coupling.max_passes {
                     let un = coupling.normal_of_traction(&used);
                     let p = pressure(pt.normal, Some(&un))?;
                     let c = coupling.tangential_of_pressure(&p);
-                    let trial = h.trial(Some(&p), target, Some(&c), warm.as_ref()).map_err(wrap)?;
+                    let mut trial =
+                        h.trial(Some(&p), target, Some(&c), warm.as_ref()).map_err(wrap)?;
                     last = rel_change(trial.traction(), &used);
+                    let dp = earlier.as_ref().map_or(0.0, |e| rel_change_scalar(&p, e.pressure()));
+                    if let Some(e) = &earlier {
+                        trial.absorb(e);
+                    }
                     if last <= coupling.tolerance {
-                        h.accept(trial, pass, last);
+                        h.accept(trial, pass, (last, dp));
                         done = true;
                         break;
                     }
                     used = trial.traction().to_vec();
                     warm = Some(WarmStart::from(trial.solution()));
+                    earlier = Some(trial);
                 }
                 if !done {
                     return Err(wrap(Error::NotConverged {
@@ -295,6 +302,22 @@ impl HistoryProblem<'_> {
             self.check_corner(i, t, m, &pr, e, path.has_moment())?;
         }
         Ok(())
+    }
+}
+
+/// The same for scalar fields.
+fn rel_change_scalar(a: &[f64], b: &[f64]) -> f64 {
+    let (mut d, mut s) = (0.0, 0.0);
+    for (x, y) in a.iter().zip(b) {
+        d += (x - y).powi(2);
+        s += x * x;
+    }
+    if s > 0.0 {
+        (d / s).sqrt()
+    } else if d > 0.0 {
+        f64::INFINITY
+    } else {
+        0.0
     }
 }
 

@@ -110,6 +110,9 @@ pub struct HistoryStep {
     /// The coupling residual of the accepted pass: the relative change of the traction
     /// between it and the traction that made its pressure (0 for an uncoupled step).
     pub coupling_residual: f64,
+    /// The relative change ($L^2$) of the pressure between the last two coupling passes (0
+    /// for a one-pass step: its pressure does not depend on the traction).
+    pub coupling_pressure_change: f64,
     /// Wall time of the step, seconds.
     pub seconds: f64,
 }

@@ -134,6 +134,15 @@ impl StepTrial {
     pub fn pressure(&self) -> &[f64] {
         &self.pressure
     }
+
+    /// Count an earlier pass's solves, Newton steps and products in this one's (the step's
+    /// record sums them over its passes), and start its clock at the earlier one's.
+    pub(super) fn absorb(&mut self, earlier: &StepTrial) {
+        self.tally.solves += earlier.tally.solves;
+        self.tally.newton += earlier.tally.newton;
+        self.tally.products += earlier.tally.products;
+        self.t0 = earlier.t0.min(self.t0);
+    }
 }
 
 impl LoadHistory<'_> {
@@ -145,7 +154,7 @@ impl LoadHistory<'_> {
     /// As [`LoadHistory::trial`]. After an error the state is that of the last solved step.
     pub fn step(&mut self, pressure: Option<&[f64]>, target: StepTarget) -> Result<&HistoryStep> {
         let trial = self.trial(pressure, target, None, None)?;
-        Ok(self.accept(trial, 1, 0.0))
+        Ok(self.accept(trial, 1, (0.0, 0.0)))
     }
 
     /// Solve one step without taking it into the path state: the pass of a coupled step
@@ -329,12 +338,14 @@ impl LoadHistory<'_> {
     }
 
     /// Take a solved pass into the path state and record the step, with the number of
-    /// coupling passes it took and the coupling residual (1 and 0 for an uncoupled step).
+    /// coupling passes it took and the coupling residual and pressure change
+    /// ([`HistoryStep::coupling_residual`], [`HistoryStep::coupling_pressure_change`]; 1,
+    /// 0 and 0 for an uncoupled step).
     pub fn accept(
         &mut self,
         trial: StepTrial,
         passes: usize,
-        coupling_residual: f64,
+        (coupling_residual, pressure_change): (f64, f64),
     ) -> &HistoryStep {
         let previous = std::mem::replace(&mut self.grid.pressure, trial.pressure);
         self.pressure_prev = previous;
@@ -350,7 +361,7 @@ impl LoadHistory<'_> {
             trial.target,
             trial.dir,
             trial.centre,
-            (trial.tally, passes, coupling_residual),
+            (trial.tally, passes, coupling_residual, pressure_change),
             trial.t0,
         );
         self.steps.last().expect("a step was just recorded")
@@ -398,7 +409,7 @@ impl LoadHistory<'_> {
         target: StepTarget,
         dir: (f64, f64),
         centre: (f64, f64),
-        (tally, passes, coupling_residual): (Tally, usize, f64),
+        (tally, passes, coupling_residual, pressure_change): (Tally, usize, f64, f64),
         t0: Instant,
     ) {
         let n = self.grid.len();
@@ -514,6 +525,7 @@ impl LoadHistory<'_> {
             residual: sol.info.residual.max(sol.info.load_residual),
             coupling_passes: passes,
             coupling_residual,
+            coupling_pressure_change: pressure_change,
             seconds: t0.elapsed().as_secs_f64(),
         });
     }
