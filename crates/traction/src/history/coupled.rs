@@ -13,6 +13,9 @@ use stickslip_lattice::{ContactGrid, CrossOperator};
 /// The coupling iteration's name (as in [`Error::NotConverged`]).
 pub const COUPLING_NAME: &str = "load path Dundurs coupling (alternating passes)";
 
+/// The loads of a step: tangential, normal, moment.
+type Loads = (f64, f64, f64);
+
 /// Default limit of coupling passes per step.
 pub const DEFAULT_COUPLING_PASSES: usize = 60;
 
@@ -215,7 +218,11 @@ impl HistoryProblem<'_> {
         self.check_corners(path, |p| pressure(p, None))?;
         let mut h = self.start()?;
         let mut cache: Option<(f64, Vec<f64>)> = None;
+        // The last step's loads and traction, for the first pass's traction (below).
+        let mut before: Option<(Loads, Vec<(f64, f64)>)> = None;
+        let mut loads_prev: Option<(f64, f64, f64)> = None;
         for (i, pt) in path.points().into_iter().enumerate() {
+            let loads = (pt.tangential, pt.normal, pt.moment.unwrap_or(0.0));
             let target = StepTarget {
                 control: path.control(),
                 tangential: pt.tangential,
@@ -234,7 +241,19 @@ impl HistoryProblem<'_> {
                 let trial = h.trial(pr, target, c.as_deref(), None).map_err(wrap)?;
                 h.accept(trial, 1, (0.0, 0.0));
             } else {
+                // The first pass's gap takes the traction extrapolated along the last
+                // increment when the loads continue along it (ratio r of the increments),
+                // else the last step's: only a start, the stopping test compares each pass
+                // with the traction that made its gap.
                 let mut used = h.traction().to_vec();
+                if let (Some(lp), Some((lb, qb))) = (loads_prev, &before) {
+                    if let Some(r) = continuation(loads, lp, *lb) {
+                        for (u, b) in used.iter_mut().zip(qb) {
+                            *u = (u.0 + r * (u.0 - b.0), u.1 + r * (u.1 - b.1));
+                        }
+                    }
+                }
+                let q_last = h.traction().to_vec();
                 let mut warm: Option<WarmStart> = None;
                 let mut last = f64::INFINITY;
                 let mut done = false;
@@ -259,6 +278,7 @@ impl HistoryProblem<'_> {
                     warm = Some(WarmStart::from(trial.solution()));
                     earlier = Some(trial);
                 }
+                before = loads_prev.map(|lp| (lp, q_last));
                 if !done {
                     return Err(wrap(Error::NotConverged {
                         solver: COUPLING_NAME,
@@ -269,6 +289,7 @@ impl HistoryProblem<'_> {
                     .into());
                 }
             }
+            loads_prev = Some(loads);
             observe(i, pt.corner, &h)?;
         }
         Ok(h.into_outcome())
@@ -303,6 +324,25 @@ impl HistoryProblem<'_> {
         }
         Ok(())
     }
+}
+
+/// The ratio $r \ge 0$ of the load increment `now - last` to `last - before` when the
+/// two are parallel (to $10^{-9}$ of the larger), else `None`.
+fn continuation(
+    now: (f64, f64, f64),
+    last: (f64, f64, f64),
+    before: (f64, f64, f64),
+) -> Option<f64> {
+    let d1 = [now.0 - last.0, now.1 - last.1, now.2 - last.2];
+    let d0 = [last.0 - before.0, last.1 - before.1, last.2 - before.2];
+    let n0: f64 = d0.iter().map(|v| v * v).sum::<f64>().sqrt();
+    if n0 == 0.0 {
+        return None;
+    }
+    let r = d1.iter().zip(&d0).map(|(a, b)| a * b).sum::<f64>() / (n0 * n0);
+    let off: f64 = d1.iter().zip(&d0).map(|(a, b)| (a - r * b).powi(2)).sum::<f64>().sqrt();
+    let n1: f64 = d1.iter().map(|v| v * v).sum::<f64>().sqrt();
+    ((0.0..=4.0).contains(&r) && off <= 1e-9 * n0.max(n1)).then_some(r)
 }
 
 /// The same for scalar fields.
