@@ -141,3 +141,19 @@ fn surface_path_runs_coupled() {
     let normal = out.solver.normal.expect("solver.normal");
     assert!(normal.steps >= c.passes, "{} solves for {} passes", normal.steps, c.passes);
 }
+
+#[test]
+fn periodic_surface_path_runs_coupled() {
+    // The sphere on one period of 0.8 mm (about two contact diameters), the periodic cross
+    // operators.
+    let (plan, out) = solve(&scene(
+        "kind = \"surface\"\nboundary = \"periodic\"\nsize = [\"0.8 mm\", \"0.8 mm\"]\ncells = [48, 48]\n[geometry.profile]\nshape = \"sphere\"\nradius = \"10 mm\"",
+        "model = \"rigid\"",
+        32,
+    ));
+    assert!(reason(&plan).contains("coupled with the normal contact through Dundurs beta = 0.2857"));
+    check_columns(&out);
+    let h = out.history.as_ref().unwrap();
+    assert!(h.coupling_passes.iter().all(|&p| p >= 2), "{:?}", h.coupling_passes);
+    assert!(out.solver.coupling.expect("solver.coupling").traction_change <= 1e-9);
+}
