@@ -321,8 +321,16 @@ pub(super) fn effects(
                 ));
             }
             if let Recipe::Contact(c) = recipe {
-                if !c.bodies.identical && c.bodies.beta != 0.0 {
-                    notes.push(format!("the load path neglects the normal-tangential coupling (Dundurs beta = {:.4}; exact for beta = 0)", c.bodies.beta));
+                if c.bodies.beta != 0.0 {
+                    let given = matches!(
+                        c.normal,
+                        ContactNormal::EllipseGiven { .. } | ContactNormal::Patches(_)
+                    );
+                    reason.push_str(&if given {
+                        format!("; dissimilar bodies (Dundurs beta = {:.4}): the tangential displacement of each step's pressure change enters its slip (the prescribed pressure does not respond to the traction)", c.bodies.beta)
+                    } else {
+                        format!("; coupled with the normal contact through Dundurs beta = {:.4} (dissimilar bodies): each step alternates normal and tangential solves until the traction settles", c.bodies.beta)
+                    });
                 }
             }
             effects.push(on(E::Hysteresis, reason, Technique::LoadHistory));

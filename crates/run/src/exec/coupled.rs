@@ -94,6 +94,8 @@ pub(crate) fn solve(
         residual: info.residual,
         normal_iterations: info.normal_iterations,
         tangential_iterations: info.tangential_iterations,
+        steps: None,
+        most_passes: None,
     });
     let gz = GridZones::from_states(&t.state);
     cx.notes.push(format!(

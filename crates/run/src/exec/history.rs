@@ -17,13 +17,15 @@ use std::f64::consts::PI;
 use stickslip_halfspace::hertz::{HertzEllipse, HertzSphere};
 use stickslip_lattice::ContactGrid;
 use stickslip_normal::{NormalLoad as TNormalLoad, NormalProblem, NormalSolution};
-use stickslip_traction::history::{HistoryProblem, LoadPath, PathControl};
+use stickslip_traction::history::{HistoryProblem, LoadPath, PathControl, PathCoupling};
 use stickslip_traction::{ElementState, Error as TractionError, FastConfig, LoadKind, Tolerance};
 
 use super::friction::TangentialOut;
 use super::lattice::Lattice;
 use super::normal::{surface_err, surface_solution, ContactSolution};
-use super::outcome::{GridZones, HistoryLoopOut, HistoryOut, RigidOut, RuizMaxOut, Zones};
+use super::outcome::{
+    CouplingOut, GridZones, HistoryLoopOut, HistoryOut, RigidOut, RuizMaxOut, Zones,
+};
 use super::{solver_err, Ctx};
 use crate::plan::recipe::{ContactNormal, ContactRecipe, HistoryRecipe};
 use stickslip_scene::eng::eng;
@@ -44,16 +46,99 @@ impl From<TractionError> for Fail {
 /// The semi-axes of a Hertz contact under a normal load.
 type SemiAxes<'a> = Box<dyn Fn(f64) -> Result<(f64, f64), SceneError> + 'a>;
 
-/// A surface's normal-contact solver, its operator, the last pressure (the next solve's
-/// start), the last solution, and the number of solves of the path with the wall time of
-/// their iterations (for `solver.normal`).
-struct SurfaceSolver<'a> {
-    problem: NormalProblem<'a>,
+/// The normal-contact solver of a path (a surface's, or a Hertz body's on the history's box
+/// between dissimilar bodies): its lattice, initial gap and operator, the last pressure (the
+/// next solve's start), the last solution, and the number of solves of the path with their
+/// iterations and wall time (for `solver.normal` and `solver.coupling`).
+struct SurfaceSolver {
+    cells: (usize, usize),
+    cell: (f64, f64),
+    gap: Vec<f64>,
+    bodies: [stickslip_halfspace::Material; 2],
+    boundary: stickslip_normal::Boundary,
+    tolerance: Tolerance,
     op: stickslip_normal::NormalOperator,
     warm: RefCell<Option<Vec<f64>>>,
     last: RefCell<Option<NormalSolution>>,
     solves: std::cell::Cell<usize>,
+    iterations: std::cell::Cell<usize>,
     seconds: std::cell::Cell<f64>,
+}
+
+impl SurfaceSolver {
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        cells: (usize, usize),
+        cell: (f64, f64),
+        gap: Vec<f64>,
+        bodies: [stickslip_halfspace::Material; 2],
+        boundary: stickslip_normal::Boundary,
+        tolerance: Tolerance,
+    ) -> Result<Self, SceneError> {
+        let problem = NormalProblem::new(cells.0, cells.1, cell, &gap, bodies, boundary)
+            .map_err(surface_err)?
+            .with_tolerance(tolerance);
+        let op = problem.operator();
+        Ok(Self {
+            cells,
+            cell,
+            gap,
+            bodies,
+            boundary,
+            tolerance,
+            op,
+            warm: RefCell::new(None),
+            last: RefCell::new(None),
+            solves: std::cell::Cell::new(0),
+            iterations: std::cell::Cell::new(0),
+            seconds: std::cell::Cell::new(0.0),
+        })
+    }
+
+    /// The pressure under the normal load `p` with the traction's normal displacement `un`
+    /// (row-major on the lattice) added to the initial gap, warm from the last solve.
+    fn solve(&self, p: f64, un: Option<&[f64]>) -> Result<Vec<f64>, SceneError> {
+        let shifted: Vec<f64>;
+        let gap = match un {
+            Some(u) => {
+                shifted = self.gap.iter().zip(u).map(|(g, u)| g + u).collect();
+                &shifted
+            }
+            None => &self.gap,
+        };
+        let problem = NormalProblem::new(
+            self.cells.0,
+            self.cells.1,
+            self.cell,
+            gap,
+            self.bodies,
+            self.boundary,
+        )
+        .map_err(surface_err)?
+        .with_tolerance(self.tolerance);
+        let w = self.warm.borrow().clone();
+        let s = problem
+            .solve_with(&self.op, TNormalLoad::Force(p), w.as_deref())
+            .map_err(surface_err)?;
+        if s.touches_boundary && self.boundary == stickslip_normal::Boundary::Free {
+            return Err(SceneError::new(
+                ErrorKind::Solver,
+                format!(
+                    "the contact at the normal load {} reaches the edge of the load path's lattice",
+                    eng(p, "N")
+                ),
+            )
+            .key("solver.grid")
+            .hint("the lattice covers the Hertz contact at the path's largest load with a margin of an eighth; keep the loads within it, or report this scene"));
+        }
+        *self.warm.borrow_mut() = Some(s.pressure.clone());
+        self.solves.set(self.solves.get() + 1);
+        self.iterations.set(self.iterations.get() + s.info.iterations);
+        self.seconds.set(self.seconds.get() + s.info.solve_seconds);
+        let out = s.pressure.clone();
+        *self.last.borrow_mut() = Some(s);
+        Ok(out)
+    }
 }
 
 /// How each step's pressure is made on the history's lattice.
@@ -62,8 +147,8 @@ enum Pressure<'a> {
     Hertz { semi_axes: SemiAxes<'a> },
     /// A fixed shape scaled to the load (given semi-axes; patches).
     Scaled { shape: Vec<f64> },
-    /// The normal-contact solver of a surface.
-    Surface(Box<SurfaceSolver<'a>>),
+    /// The normal-contact solver (a surface's; a Hertz body's between dissimilar bodies).
+    Surface(Box<SurfaceSolver>),
 }
 
 /// The history's lattice: its grid (every cell that may touch), the result lattice it maps
@@ -117,8 +202,53 @@ fn setup<'a>(
     n0: &ContactSolution,
     pmax: f64,
     gap: &'a [f64],
+    tolerance: f64,
 ) -> Result<Setup<'a>, SceneError> {
     let n = r.grid;
+    // Dissimilar bodies on a Hertz body: the normal solver on a box an eighth wider than
+    // the Hertz contact at the largest load (the traction's normal displacement moves the
+    // contact edge), `solver.grid` cells across the Hertz contact.
+    let two_way = r.bodies.beta != 0.0;
+    let radii = match &r.normal {
+        ContactNormal::Sphere { radius, .. } => Some((*radius, *radius)),
+        ContactNormal::Ellipse { rx, ry, .. } => Some((*rx, *ry)),
+        _ => None,
+    };
+    if let (true, Some((rx, ry))) = (two_way, radii) {
+        let (a, b) = match &r.normal {
+            ContactNormal::Sphere { radius, e_star, .. } => {
+                let h = HertzSphere::new(pmax, *radius, *e_star)
+                    .map_err(|e| solver_err("Hertz sphere", e))?;
+                (h.contact_radius(), h.contact_radius())
+            }
+            ContactNormal::Ellipse { rx, ry, e_star, .. } => {
+                let h = HertzEllipse::new(*rx, *ry, pmax, *e_star)
+                    .map_err(|e| solver_err("Hertz ellipse", e))?;
+                (h.semi_axis_x(), h.semi_axis_y())
+            }
+            _ => unreachable!("radii only for Hertz bodies"),
+        };
+        let cells = n + n.div_ceil(8) * 2;
+        let (hx, hy) = (2.0 * a / n as f64, 2.0 * b / n as f64);
+        let (ax, ay) = (0.5 * cells as f64 * hx, 0.5 * cells as f64 * hy);
+        let (grid, lattice) = box_grid(ax, ay, cells)?;
+        let gap: Vec<f64> = (0..cells * cells)
+            .map(|k| {
+                let (x, y) = (grid.x[k], grid.y[k]);
+                x * x / (2.0 * rx) + y * y / (2.0 * ry)
+            })
+            .collect();
+        let tol = Tolerance::relative(tolerance).map_err(|e| solver_err("tolerance", e))?;
+        let solver = SurfaceSolver::new(
+            (cells, cells),
+            (hx, hy),
+            gap,
+            r.bodies.pair(),
+            stickslip_normal::Boundary::Free,
+            tol,
+        )?;
+        return Ok(Setup { grid, lattice, pressure: Pressure::Surface(Box::new(solver)) });
+    }
     Ok(match &r.normal {
         ContactNormal::Sphere { radius, e_star, .. } => {
             let axes = move |p: f64| {
@@ -163,10 +293,14 @@ fn setup<'a>(
                 SurfaceBoundary::Free => stickslip_normal::Boundary::Free,
                 SurfaceBoundary::Periodic => stickslip_normal::Boundary::Periodic,
             };
-            let problem = NormalProblem::new(nx, ny, (hx, hy), gap, r.bodies.pair(), boundary)
-                .map_err(surface_err)?
-                .with_tolerance(tol);
-            let op = problem.operator();
+            let solver = SurfaceSolver::new(
+                (nx, ny),
+                (hx, hy),
+                gap.to_vec(),
+                r.bodies.pair(),
+                boundary,
+                tol,
+            )?;
             let grid = ContactGrid::from_mask(
                 hx,
                 hy,
@@ -180,41 +314,24 @@ fn setup<'a>(
             Setup {
                 grid,
                 lattice: Lattice::new(x0, y0, hx, hy, nx, ny),
-                pressure: Pressure::Surface(Box::new(SurfaceSolver {
-                    problem,
-                    op,
-                    warm: RefCell::new(None),
-                    last: RefCell::new(None),
-                    solves: std::cell::Cell::new(0),
-                    seconds: std::cell::Cell::new(0.0),
-                })),
+                pressure: Pressure::Surface(Box::new(solver)),
             }
         }
     })
 }
 
 impl Pressure<'_> {
-    /// The pressure of every history cell under the normal load `p`.
-    fn at(&self, grid: &ContactGrid, p: f64) -> Result<Vec<f64>, SceneError> {
+    /// The pressure of every history cell under the normal load `p`, with the traction's
+    /// normal displacement `un` in the gap of a normal solve (a prescribed pressure ignores
+    /// it).
+    fn at(&self, grid: &ContactGrid, p: f64, un: Option<&[f64]>) -> Result<Vec<f64>, SceneError> {
         match self {
             Pressure::Hertz { semi_axes } => {
                 let (a, b) = semi_axes(p)?;
                 hertz_on(grid, a, b, p)
             }
             Pressure::Scaled { shape } => Ok(shape.iter().map(|s| s * p).collect()),
-            Pressure::Surface(sv) => {
-                let w = sv.warm.borrow().clone();
-                let s = sv
-                    .problem
-                    .solve_with(&sv.op, TNormalLoad::Force(p), w.as_deref())
-                    .map_err(surface_err)?;
-                *sv.warm.borrow_mut() = Some(s.pressure.clone());
-                sv.solves.set(sv.solves.get() + 1);
-                sv.seconds.set(sv.seconds.get() + s.info.solve_seconds);
-                let out = s.pressure.clone();
-                *sv.last.borrow_mut() = Some(s);
-                Ok(out)
-            }
+            Pressure::Surface(sv) => sv.solve(p, un),
         }
     }
 }
@@ -233,7 +350,7 @@ pub(crate) fn run(
         ContactNormal::Surface { surface, .. } => surface.initial_gap(),
         _ => Vec::new(),
     };
-    let st = setup(r, n0, pmax, &gap)?;
+    let st = setup(r, n0, pmax, &gap, h.tolerance.clamp(1e-12, 1e-1))?;
     let control = match h.control {
         HistoryControl::Force => PathControl::Force,
         HistoryControl::Shift => PathControl::Shift,
@@ -270,21 +387,46 @@ pub(crate) fn run(
         _ => None,
     };
     let t_path = std::time::Instant::now();
-    let out = problem
-        .run_observed(
+    let mut observe = |_, corner, state: &stickslip_traction::history::LoadHistory<'_>| match (
+        ruiz.as_mut(),
+        corner,
+    ) {
+        (Some(t), Some(_)) => t.corner(state.pressure(), state.traction()).map_err(Fail::Scene),
+        _ => Ok(()),
+    };
+    // Dissimilar bodies: every step coupled through Dundurs' beta (the cross operators on
+    // the history's lattice); a prescribed pressure (given semi-axes, patches) one way.
+    let coupling = if r.bodies.beta != 0.0 {
+        let (nx, ny) = (st.lattice.x.len(), st.lattice.y.len());
+        let origin = (st.lattice.x[0] - 0.5 * st.grid.hx, st.lattice.y[0] - 0.5 * st.grid.hy);
+        let periodic = super::grid::periodic_lattice(r).is_some();
+        let mut c = PathCoupling::new(&st.grid, r.bodies.pair(), (nx, ny), origin, periodic)
+            .and_then(|c| c.with_tolerance(h.tolerance.clamp(1e-14, 1e-1)))
+            .map_err(|e| solver_err("load path coupling", e))?;
+        if !matches!(st.pressure, Pressure::Surface(_)) {
+            c = c.one_way();
+        }
+        Some(c)
+    } else {
+        None
+    };
+    let out = match &coupling {
+        Some(c) => problem.run_coupled(
             &path,
-            |p| st.pressure.at(&st.grid, p).map_err(Fail::Scene),
-            |_, corner, state| match (ruiz.as_mut(), corner) {
-                (Some(t), Some(_)) => {
-                    t.corner(state.pressure(), state.traction()).map_err(Fail::Scene)
-                }
-                _ => Ok(()),
-            },
-        )
-        .map_err(|e| match e {
-            Fail::Scene(e) => e,
-            Fail::Traction(e) => history_err(h, e),
-        })?;
+            c,
+            |p, un| st.pressure.at(&st.grid, p, un).map_err(Fail::Scene),
+            &mut observe,
+        ),
+        None => problem.run_observed(
+            &path,
+            |p| st.pressure.at(&st.grid, p, None).map_err(Fail::Scene),
+            &mut observe,
+        ),
+    }
+    .map_err(|e| match e {
+        Fail::Scene(e) => e,
+        Fail::Traction(e) => history_err(h, e),
+    })?;
     let ruiz_values = ruiz.as_ref().map(|t| t.parameter(&out.slip_range));
     cx.progress("load path", total, total);
     let steps = &out.steps;
@@ -467,6 +609,40 @@ pub(crate) fn run(
             shift_drift: l.shift_drift,
         })
         .collect();
+    if let Some(c) = &coupling {
+        let normal_iterations = match &st.pressure {
+            Pressure::Surface(sv) => sv.iterations.get(),
+            _ => 0,
+        };
+        let passes: usize = steps.iter().map(|s| s.coupling_passes).sum();
+        let most = steps.iter().map(|s| s.coupling_passes).max().unwrap_or(0);
+        let dp = steps.iter().map(|s| s.coupling_pressure_change).fold(0.0, f64::max);
+        let dq = steps.iter().map(|s| s.coupling_residual).fold(0.0, f64::max);
+        cx.coupling = Some(CouplingOut {
+            beta: c.beta(),
+            passes,
+            pressure_change: dp,
+            traction_change: dq,
+            residual: dp.max(dq),
+            normal_iterations,
+            tangential_iterations: cx.iterations,
+            steps: Some(steps.len()),
+            most_passes: Some(most),
+        });
+        cx.notes.push(if c.alternates() {
+            format!(
+                "load path between dissimilar bodies (Dundurs beta = {:.4}): each step coupled, alternating normal and tangential solves until the traction settles (tolerance {:.1e}): {passes} passes over {} steps (at most {most} in one), {normal_iterations} normal iterations; largest last change of pressure {dp:.2e}, of traction {dq:.2e}",
+                c.beta(),
+                c.tolerance(),
+                steps.len()
+            )
+        } else {
+            format!(
+                "load path between dissimilar bodies (Dundurs beta = {:.4}): the pressure is prescribed (it does not respond to the traction), so only the tangential displacement of its change enters the slip; one pass per step",
+                c.beta()
+            )
+        });
+    }
     cx.notes.push(format!(
         "load path: {} steps ({} corners, {} between), {} fast solves, {} Newton steps, {} operator products, largest residual {:.2e}; the steps took {:.3} s; {} loop{}{}; energy dissipated over the path {}",
         steps.len(),
@@ -523,6 +699,11 @@ pub(crate) fn run(
         mz: Vec::new(),
         creepage_longitudinal: Vec::new(),
         creepage_lateral: Vec::new(),
+        coupling_passes: if coupling.is_some() {
+            steps.iter().map(|s| s.coupling_passes).collect()
+        } else {
+            Vec::new()
+        },
     };
     let t = TangentialOut {
         creep: None,

@@ -501,6 +501,13 @@ pub struct CouplingOut {
     pub normal_iterations: usize,
     /// Tangential Newton steps over all passes.
     pub tangential_iterations: usize,
+    /// A load path: its steps (each coupled on its own; `passes` is then the sum over the
+    /// steps, the changes and the residual the largest of the steps'). Absent for one state.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub steps: Option<usize>,
+    /// A load path: the most passes one step took.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub most_passes: Option<usize>,
 }
 
 /// `rolling` in result.json (FORMULAS.md D notation).
@@ -651,6 +658,10 @@ pub struct HistoryOut {
     /// Transient rolling only: the lateral creepage (0 for the step at rest).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub creepage_lateral: Vec<f64>,
+    /// Passes of the Dundurs coupling per step (a load path between dissimilar bodies; absent
+    /// otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub coupling_passes: Vec<usize>,
 }
 
 /// The largest Ruiz parameter of a load path and its cell.

@@ -109,6 +109,7 @@ pub(crate) fn solve(
         mz: Vec::with_capacity(total),
         creepage_longitudinal: Vec::with_capacity(total),
         creepage_lateral: Vec::with_capacity(total),
+        coupling_passes: Vec::new(),
     };
     let (mut shift, mut dissipated, mut work) = (0.0, 0.0, 0.0);
     let (mut iterations, mut products, mut residual) = (0usize, 0usize, 0.0f64);

@@ -74,6 +74,29 @@
 //! increment (a bracketed secant search on the force, each trial a warm fast solve); a shift
 //! beyond the onset of sliding is solved as sliding at the capacity.
 //!
+//! **Dissimilar bodies** (Dundurs' $\beta \ne 0$). A pressure then moves the two surfaces
+//! tangentially by different amounts ($K^{tn}p$) and a traction moves them normally
+//! ($K^{nt}\mathbf q$; `stickslip_lattice::CrossOperator`). The slip increment of a step
+//! counts the change of the whole relative tangential displacement,
+//! $$\Delta\mathbf s_k = \Delta\mathbf w_k - \big(K(\mathbf q^n - \mathbf q^{n-1})\big)_k -
+//!   \big(K^{tn}(p^n - p^{n-1})\big)_k,$$
+//! so the prescribed displacement becomes
+//! $\mathbf u^0 = K^{tn}p^n - (K\mathbf q^{n-1} + K^{tn}p^{n-1})$: the previous step's total
+//! displacement, its coupling part included, and this step's pressure's share
+//! ([`LoadHistory::trial`]). The pressure of a step depends on its traction through the gap
+//! $g^0 + K^{nt}\mathbf q^n$, so [`HistoryProblem::run_coupled`] alternates, as
+//! the single-state coupled solve of `stickslip-normal` does (Panagiotopoulos 1975): a normal
+//! solve with the gap corrected by the traction of the last pass (the first pass: the last
+//! step's traction), then the tangential step with that pressure, warm from the last pass,
+//! until the traction of a pass differs from the one that made its pressure by at most the
+//! tolerance ([`PathCoupling::with_tolerance`]). Each step records its passes and that
+//! residual ([`HistoryStep::coupling_passes`]). A prescribed pressure ([`PathCoupling::one_way`])
+//! takes one pass, and so does $\beta = 0$, which is then exactly the uncoupled step.
+//! With coupling, `work` $=$ `elastic_energy` $+$ `dissipated` no longer holds step by step
+//! (the pressure works on the tangential displacement and the traction on the normal one);
+//! over a closed cycle at constant normal load the state returns and the loop area is still
+//! the energy dissipated.
+//!
 //! Units: consistent units (SI in practice): forces in N, lengths in m, tractions in Pa,
 //! energies in J and energies per area in J/m².
 //!
@@ -82,14 +105,16 @@
 //! sources ([`crate::fast`]); FORMULAS.md E (Mindlin, Mindlin–Deresiewicz). Derivation and
 //! verification: `docs/load-histories.md`.
 
+mod coupled;
 mod path;
 mod problem;
 mod solves;
 mod stepper;
 
+pub use coupled::{PathCoupling, COUPLING_NAME, DEFAULT_COUPLING_PASSES};
 pub use path::{find_loops, HistoryLoop, LoadPath, PathControl, PathPoint};
 pub use problem::{
     HistoryDirections, HistoryOutcome, HistoryProblem, HistoryStep, StepTarget,
     SLIP_RANGE_DIRECTIONS,
 };
-pub use stepper::LoadHistory;
+pub use stepper::{LoadHistory, StepTrial};

@@ -226,7 +226,8 @@ pub struct HistoryLoop {
 /// Turning points are the steps where one of the prescribed values (the tangential value
 /// [`HistoryStep::target`]: the force under [`PathControl::Force`], the shift under
 /// [`PathControl::Shift`]; the prescribed moment; the normal load) changes the sign of its
-/// increment, and the last step. From a turning point $r_j$, the loop closes at the first
+/// increment (changes within $10^{-9}$ of their largest magnitude count as none), and the
+/// last step. From a turning point $r_j$, the loop closes at the first
 /// turning point $r_m$, $m \ge j + 2$, where the three values agree with those at $r_j$ (to
 /// $10^{-9}$ of their largest magnitude along the path); the search then continues from
 /// $r_m$, or from $r_{j+1}$ when no such point exists.
@@ -236,12 +237,16 @@ pub fn find_loops(steps: &[HistoryStep]) -> Vec<HistoryLoop> {
     // tolerance, which would make a hold look like a zig-zag.
     let values: [&dyn Fn(&HistoryStep) -> f64; 3] =
         [&|s| s.target, &|s| s.target_moment.unwrap_or(0.0), &|s| s.normal];
+    let scales =
+        values.map(|v| steps.iter().map(|s| v(s).abs()).fold(0.0, f64::max).max(f64::MIN_POSITIVE));
     let mut turn = vec![false; steps.len()];
-    for value in values {
+    for (value, sc) in values.iter().zip(&scales) {
         let mut dir = 0.0f64;
         for i in 1..steps.len() {
             let d = value(&steps[i]) - value(&steps[i - 1]);
-            if d != 0.0 {
+            // Changes within 1e-9 of the scale are a hold: the normal force of a step whose
+            // pressure comes from a normal solve (coupled paths) varies by its tolerance.
+            if d.abs() > 1e-9 * sc {
                 if dir != 0.0 && d.signum() != dir {
                     turn[i - 1] = true;
                 }
@@ -253,8 +258,6 @@ pub fn find_loops(steps: &[HistoryStep]) -> Vec<HistoryLoop> {
         *last = steps.len() > 1;
     }
     let turns: Vec<usize> = (0..steps.len()).filter(|&i| turn[i]).collect();
-    let scales =
-        values.map(|v| steps.iter().map(|s| v(s).abs()).fold(0.0, f64::max).max(f64::MIN_POSITIVE));
     let same = |a: &HistoryStep, b: &HistoryStep| {
         values.iter().zip(&scales).all(|(v, sc)| (v(a) - v(b)).abs() <= 1e-9 * sc)
     };

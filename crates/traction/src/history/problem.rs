@@ -103,6 +103,16 @@ pub struct HistoryStep {
     pub products: usize,
     /// Final relative residual of the step's solve (the larger of complementarity and load).
     pub residual: f64,
+    /// Passes of the Dundurs coupling (a normal and a tangential solve each; module docs,
+    /// "Dissimilar bodies"): 1 for an uncoupled step or a pressure that does not depend on
+    /// the traction.
+    pub coupling_passes: usize,
+    /// The coupling residual of the accepted pass: the relative change of the traction
+    /// between it and the traction that made its pressure (0 for an uncoupled step).
+    pub coupling_residual: f64,
+    /// The relative change ($L^2$) of the pressure between the last two coupling passes (0
+    /// for a one-pass step: its pressure does not depend on the traction).
+    pub coupling_pressure_change: f64,
     /// Wall time of the step, seconds.
     pub seconds: f64,
 }
@@ -304,34 +314,7 @@ impl HistoryProblem<'_> {
                     .as_ref()
                     .map(|c| &c.1)
                     .ok_or(Error::EmptyGrid { reason: "no pressure" })?;
-                let cap = self.capacity(pr);
-                if !path.has_moment() {
-                    if t.abs() > cap * (1.0 + 1e-12) {
-                        return Err(Error::PathCorner {
-                            corner: i,
-                            name: "tangential force / friction capacity f P",
-                            value: t.abs() / cap,
-                            allowed:
-                                "<= 1 under force control (beyond it there is no equilibrium: \
-                                      the bodies slide and accelerate; a shift path slides)",
-                        }
-                        .into());
-                    }
-                } else {
-                    let mut g = self.grid.clone();
-                    g.pressure.clone_from(pr);
-                    let lambda = g.load_capacity_factor(self.friction, (t * e.0, t * e.1), m);
-                    if lambda < 1.0 {
-                        return Err(Error::PathCorner {
-                            corner: i,
-                            name: "load capacity factor of force and moment",
-                            value: lambda,
-                            allowed: ">= 1 (below 1 the force and moment together exceed what \
-                                      friction carries: the bodies slide)",
-                        }
-                        .into());
-                    }
-                }
+                self.check_corner(i, t, m, pr, e, path.has_moment())?;
             }
         }
         let mut h = self.start()?;
@@ -347,6 +330,45 @@ impl HistoryProblem<'_> {
             observe(i, pt.corner, &h)?;
         }
         Ok(h.into_outcome())
+    }
+
+    /// Corner `i` of a force-controlled path: the force `t` along the path (and the moment
+    /// `m`) within what friction carries under the corner's pressure `pr`.
+    pub(super) fn check_corner(
+        &self,
+        i: usize,
+        t: f64,
+        m: f64,
+        pr: &[f64],
+        e: (f64, f64),
+        has_moment: bool,
+    ) -> Result<()> {
+        let cap = self.capacity(pr);
+        if !has_moment {
+            if t.abs() > cap * (1.0 + 1e-12) {
+                return Err(Error::PathCorner {
+                    corner: i,
+                    name: "tangential force / friction capacity f P",
+                    value: t.abs() / cap,
+                    allowed: "<= 1 under force control (beyond it there is no equilibrium: \
+                              the bodies slide and accelerate; a shift path slides)",
+                });
+            }
+        } else {
+            let mut g = self.grid.clone();
+            g.pressure = pr.to_vec();
+            let lambda = g.load_capacity_factor(self.friction, (t * e.0, t * e.1), m);
+            if lambda < 1.0 {
+                return Err(Error::PathCorner {
+                    corner: i,
+                    name: "load capacity factor of force and moment",
+                    value: lambda,
+                    allowed: ">= 1 (below 1 the force and moment together exceed what \
+                              friction carries: the bodies slide)",
+                });
+            }
+        }
+        Ok(())
     }
 
     pub(super) fn check_moment_allowed(&self, control: PathControl, m: f64) -> Result<()> {

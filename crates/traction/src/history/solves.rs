@@ -14,10 +14,12 @@ pub(super) struct Ctx<'x> {
     pub(super) op: &'x TensorConvolution,
     pub(super) fixed: &'x Option<Vec<(f64, f64)>>,
     pub(super) centre: (f64, f64),
+    /// The step continues a converged state (not the path's first step).
+    pub(super) increment: bool,
 }
 
 /// Tallies of the solves of one step.
-#[derive(Default)]
+#[derive(Debug, Clone, Default)]
 pub(super) struct Tally {
     pub(super) solves: usize,
     pub(super) newton: usize,
@@ -56,7 +58,10 @@ impl Ctx<'_> {
             fp = fp.with_directions(TractionDirections::Fixed(d.clone()))?;
         }
         if let Some(u0) = u0 {
-            fp = fp.with_prescribed_displacement(u0)?.with_increment_start();
+            fp = fp.with_prescribed_displacement(u0)?;
+            if self.increment {
+                fp = fp.with_increment_start();
+            }
         }
         let mut last = Error::EmptyGrid { reason: "no start given" };
         for start in starts {

@@ -42,6 +42,7 @@ impl<'a> HistoryProblem<'a> {
             pressure_prev: vec![0.0; n],
             traction: vec![(0.0, 0.0); n],
             kq: vec![(0.0, 0.0); n],
+            coupled: vec![(0.0, 0.0); n],
             state: vec![ElementState::Stick; n],
             slip: vec![(0.0, 0.0); n],
             dissipation: vec![0.0; n],
@@ -79,6 +80,9 @@ pub struct LoadHistory<'a> {
     pressure_prev: Vec<f64>,
     traction: Vec<(f64, f64)>,
     kq: Vec<(f64, f64)>,
+    /// The pressure's tangential displacement $K^{tn}p$ of the last step (Dundurs coupling;
+    /// zero without it).
+    coupled: Vec<(f64, f64)>,
     state: Vec<ElementState>,
     slip: Vec<(f64, f64)>,
     dissipation: Vec<f64>,
@@ -98,17 +102,84 @@ pub struct LoadHistory<'a> {
     virgin: bool,
 }
 
+/// One solved pass of a step, not yet part of the path state ([`LoadHistory::trial`]).
+#[derive(Debug, Clone)]
+pub struct StepTrial {
+    sol: FastSolution,
+    target: StepTarget,
+    dir: (f64, f64),
+    centre: (f64, f64),
+    pressure: Vec<f64>,
+    coupled: Option<Vec<(f64, f64)>>,
+    u0: Option<Vec<(f64, f64)>>,
+    tally: Tally,
+    t0: Instant,
+}
+
+impl StepTrial {
+    /// The pass's fast solution (traction per grid cell, slip increment, rigid motion).
+    #[must_use]
+    pub fn solution(&self) -> &FastSolution {
+        &self.sol
+    }
+
+    /// The pass's traction per grid cell (Pa).
+    #[must_use]
+    pub fn traction(&self) -> &[(f64, f64)] {
+        &self.sol.traction
+    }
+
+    /// The pressure per grid cell the pass was solved with (Pa).
+    #[must_use]
+    pub fn pressure(&self) -> &[f64] {
+        &self.pressure
+    }
+
+    /// Count an earlier pass's solves, Newton steps and products in this one's (the step's
+    /// record sums them over its passes), and start its clock at the earlier one's.
+    pub(super) fn absorb(&mut self, earlier: &StepTrial) {
+        self.tally.solves += earlier.tally.solves;
+        self.tally.newton += earlier.tally.newton;
+        self.tally.products += earlier.tally.products;
+        self.t0 = earlier.t0.min(self.t0);
+    }
+}
+
 impl LoadHistory<'_> {
     /// Solve one step (module docs): `pressure` per grid cell (Pa; `None` keeps the
     /// previous step's, or the grid's at the first step), `target` the loads to reach.
+    /// The same as [`LoadHistory::trial`] without coupling, then [`LoadHistory::accept`].
     ///
     /// # Errors
-    /// [`Error::LengthMismatch`] for a pressure of the wrong length; [`Error::OutOfDomain`]
-    /// for a negative or non-finite pressure, a step without normal force, a non-finite
-    /// target, or a moment where none is allowed ([`HistoryProblem::run`]); the fast
-    /// solver's errors (a force beyond the capacity: [`Error::CapacityExceeded`]).
-    /// After an error the state is that of the last solved step.
+    /// As [`LoadHistory::trial`]. After an error the state is that of the last solved step.
     pub fn step(&mut self, pressure: Option<&[f64]>, target: StepTarget) -> Result<&HistoryStep> {
+        let trial = self.trial(pressure, target, None, None)?;
+        Ok(self.accept(trial, 1, (0.0, 0.0)))
+    }
+
+    /// Solve one step without taking it into the path state: the pass of a coupled step
+    /// (module docs, "Dissimilar bodies"), repeated with updated pressures until the pressure
+    /// and the traction agree, then [`LoadHistory::accept`]ed.
+    ///
+    /// `coupled` is the tangential displacement $K^{tn}p^n$ of this step's pressure per grid
+    /// cell (m; Dundurs coupling of dissimilar bodies): the step's slip then counts its change
+    /// since the last step, $\mathbf u^0 = K^{tn}p^n - (K\mathbf q^{n-1} + K^{tn}p^{n-1})$.
+    /// `None`: no coupling term (identical bodies), exactly the uncoupled step. `warm`, if
+    /// given, is tried first (the previous pass's solution), then the usual starts.
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] for a pressure or coupling of the wrong length;
+    /// [`Error::OutOfDomain`] for a negative or non-finite pressure, a non-finite coupling
+    /// displacement, a step without normal force, a non-finite target, or a moment where
+    /// none is allowed ([`HistoryProblem::run`]); the fast solver's errors (a force beyond
+    /// the capacity: [`Error::CapacityExceeded`]). The state is unchanged in any case.
+    pub fn trial(
+        &mut self,
+        pressure: Option<&[f64]>,
+        target: StepTarget,
+        coupled: Option<&[(f64, f64)]>,
+        warm: Option<&WarmStart>,
+    ) -> Result<StepTrial> {
         let t0 = Instant::now();
         let n = self.grid.len();
         if !target.tangential.is_finite() || target.moment.is_some_and(|m| !m.is_finite()) {
@@ -120,6 +191,22 @@ impl LoadHistory<'_> {
         }
         if let Some(m) = target.moment {
             self.problem.check_moment_allowed(target.control, m)?;
+        }
+        if let Some(c) = coupled {
+            if c.len() != n {
+                return Err(Error::LengthMismatch {
+                    name: "history coupling displacement (one per grid cell)",
+                    expected: n,
+                    got: c.len(),
+                });
+            }
+            if let Some(v) = c.iter().map(|v| v.0.hypot(v.1)).find(|v| !v.is_finite()) {
+                return Err(Error::OutOfDomain {
+                    name: "history coupling displacement",
+                    value: v,
+                    allowed: "finite",
+                });
+            }
         }
         if let Some(p) = pressure {
             if p.len() != n {
@@ -148,7 +235,7 @@ impl LoadHistory<'_> {
                 allowed: "> 0 (the bodies must touch)",
             });
         }
-        let centre = *self.centre.get_or_insert_with(|| self.grid.force_centroid());
+        let centre = self.centre.unwrap_or_else(|| self.grid.force_centroid());
         let e = (self.problem.angle.cos(), self.problem.angle.sin());
         let dot = |v: (f64, f64)| v.0 * e.0 + v.1 * e.1;
 
@@ -169,9 +256,10 @@ impl LoadHistory<'_> {
             (Some(m), None) => m - self.moment,
             _ => 0.0,
         };
-        // Warm starts, tried in order until one converges: after a reversal of a prescribed
-        // load all stick (a reversed step starts by sticking everywhere), otherwise the
-        // previous state; then the other of the two; then the solver's own cold start.
+        // Warm starts, tried in order until one converges: the caller's (a coupled step's
+        // previous pass); after a reversal of a prescribed load all stick (a reversed step
+        // starts by sticking everywhere), otherwise the previous state; then the other of the
+        // two; then the solver's own cold start.
         let turned = |inc: f64, last: f64| inc != 0.0 && last != 0.0 && inc.signum() != last;
         let reversal = turned(dir_t, self.last_dir.0) || turned(dir_m, self.last_dir.1);
         let continuing = self.predicted_start(dir_t, dir_m);
@@ -181,46 +269,102 @@ impl LoadHistory<'_> {
             rotation: 0.0,
             state: Vec::new(),
         };
-        let u0: Vec<(f64, f64)> = self.kq.iter().map(|v| (-v.0, -v.1)).collect();
-        let (u0, starts) = if self.virgin {
-            (None, vec![None])
-        } else if reversal {
-            (Some(u0.as_slice()), vec![Some(&sticking), Some(&continuing), None])
-        } else {
-            (Some(u0.as_slice()), vec![Some(&continuing), Some(&sticking), None])
+        // The prescribed displacement: minus the last step's total tangential displacement
+        // (elastic and, coupled, the pressure's), plus this step's pressure's share.
+        let u0: Option<Vec<(f64, f64)>> = match (self.virgin, coupled) {
+            (true, None) => None,
+            (true, Some(c)) => Some(c.to_vec()),
+            (false, None) => Some(self.kq.iter().map(|v| (-v.0, -v.1)).collect()),
+            (false, Some(c)) => Some(
+                self.kq
+                    .iter()
+                    .zip(c)
+                    .zip(&self.coupled)
+                    .map(|((k, c), c0)| (-k.0 + (c.0 - c0.0), -k.1 + (c.1 - c0.1)))
+                    .collect(),
+            ),
         };
-        let ctx =
-            Ctx { grid: &self.grid, p: &self.problem, op: &self.op, fixed: &self.fixed, centre };
+        let mut starts: Vec<Option<&WarmStart>> = Vec::with_capacity(4);
+        if let Some(w) = warm {
+            starts.push(Some(w));
+        }
+        if self.virgin {
+            starts.push(None);
+        } else if reversal {
+            starts.extend([Some(&sticking), Some(&continuing), None]);
+        } else {
+            starts.extend([Some(&continuing), Some(&sticking), None]);
+        }
+        let ctx = Ctx {
+            grid: &self.grid,
+            p: &self.problem,
+            op: &self.op,
+            fixed: &self.fixed,
+            centre,
+            increment: !self.virgin,
+        };
         let mut tally = Tally::default();
         let solved = match target.control {
             PathControl::Force => ctx.solve_force(
                 &mut self.scratch,
                 target.tangential,
                 target.moment,
-                u0,
+                u0.as_deref(),
                 &starts,
                 &mut tally,
             ),
             PathControl::Shift => ctx.solve_shift(
                 &mut self.scratch,
                 inc,
-                u0,
+                u0.as_deref(),
                 &starts,
                 dot(self.force),
                 self.stiffness,
                 &mut tally,
             ),
         };
-        let sol = match solved {
-            Ok(s) => s,
-            Err(err) => {
-                self.grid.pressure = previous;
-                return Err(err);
-            }
-        };
+        let step_pressure = std::mem::replace(&mut self.grid.pressure, previous);
+        Ok(StepTrial {
+            sol: solved?,
+            target,
+            dir: (dir_t, dir_m),
+            centre,
+            pressure: step_pressure,
+            coupled: coupled.map(<[(f64, f64)]>::to_vec),
+            u0,
+            tally,
+            t0,
+        })
+    }
+
+    /// Take a solved pass into the path state and record the step, with the number of
+    /// coupling passes it took and the coupling residual and pressure change
+    /// ([`HistoryStep::coupling_residual`], [`HistoryStep::coupling_pressure_change`]; 1,
+    /// 0 and 0 for an uncoupled step).
+    pub fn accept(
+        &mut self,
+        trial: StepTrial,
+        passes: usize,
+        (coupling_residual, pressure_change): (f64, f64),
+    ) -> &HistoryStep {
+        let previous = std::mem::replace(&mut self.grid.pressure, trial.pressure);
         self.pressure_prev = previous;
-        self.commit(&sol, target, (dir_t, dir_m), centre, tally, t0);
-        Ok(self.steps.last().expect("a step was just recorded"))
+        if self.centre.is_none() {
+            self.centre = Some(trial.centre);
+        }
+        if let Some(c) = trial.coupled {
+            self.coupled = c;
+        }
+        self.commit(
+            &trial.sol,
+            trial.u0.as_deref(),
+            trial.target,
+            trial.dir,
+            trial.centre,
+            (trial.tally, passes, coupling_residual, pressure_change),
+            trial.t0,
+        );
+        self.steps.last().expect("a step was just recorded")
     }
 
     /// The start of a step that continues in the direction of the last one: the tractions
@@ -257,13 +401,15 @@ impl LoadHistory<'_> {
     }
 
     /// Take a solved step into the path state and record it.
+    #[allow(clippy::too_many_arguments)]
     fn commit(
         &mut self,
         sol: &FastSolution,
+        u0: Option<&[(f64, f64)]>,
         target: StepTarget,
         dir: (f64, f64),
         centre: (f64, f64),
-        tally: Tally,
+        (tally, passes, coupling_residual, pressure_change): (Tally, usize, f64, f64),
         t0: Instant,
     ) {
         let n = self.grid.len();
@@ -306,13 +452,16 @@ impl LoadHistory<'_> {
         let dw = 0.5 * ((f0.0 + f1.0) * sol.shift.0 + (f0.1 + f1.1) * sol.shift.1)
             + 0.5 * (m0 + m1) * drot;
         // K q^n for the next step's prescribed displacement and the stored energy: the
-        // solver's displacement is K q^n + u0 with u0 = -K q^(n-1) (the first step has
-        // none), so K q^n comes without another product.
+        // solver's displacement is K q^n + u0 (u0 = -K q^(n-1) uncoupled; the first step
+        // uncoupled has none), so K q^n comes without another product.
         let (qx, qy): (Vec<f64>, Vec<f64>) = sol.traction.iter().copied().unzip();
         let mut u2 = 0.0;
         for k in 0..n {
             let u = sol.displacement[k];
-            let kq = if self.virgin { u } else { (u.0 + self.kq[k].0, u.1 + self.kq[k].1) };
+            let kq = match u0 {
+                None => u,
+                Some(u0) => (u.0 - u0[k].0, u.1 - u0[k].1),
+            };
             self.kq[k] = kq;
             u2 += qx[k] * kq.0 + qy[k] * kq.1;
         }
@@ -374,6 +523,9 @@ impl LoadHistory<'_> {
             newton_iterations: tally.newton,
             products: tally.products,
             residual: sol.info.residual.max(sol.info.load_residual),
+            coupling_passes: passes,
+            coupling_residual,
+            coupling_pressure_change: pressure_change,
             seconds: t0.elapsed().as_secs_f64(),
         });
     }
