@@ -261,12 +261,23 @@ impl Solver<'_, '_> {
             .into_par_iter()
             .map(|i| gb.iter().zip(&l0).map(|(gj, l)| l * gj[i]).sum())
             .collect();
+        // The displacement of the step, K P x, is kept beside x (the displacement is linear
+        // in the traction: each CG product K P p also moves it by alpha K P p), so the Newton
+        // loop needs no product after the step.
+        let mut dux = std::mem::take(&mut self.dux);
+        let mut duy = std::mem::take(&mut self.duy);
         // With b = 0 the start is x0 = 0 and its product is skipped.
         let mut r: Vec<f64> = if b.iter().all(|v| *v == 0.0) {
+            dux.par_iter_mut().zip(duy.par_iter_mut()).for_each(|(a, b)| {
+                *a = 0.0;
+                *b = 0.0;
+            });
             rhs.to_vec()
         } else {
             let mut hx = vec![0.0; nd];
             self.h_apply(dofs, &first, diag_d, &x, &mut hx);
+            dux.copy_from_slice(&self.vx);
+            duy.copy_from_slice(&self.vy);
             rhs.par_iter().zip(hx.par_iter()).map(|(a, b)| a - b).collect()
         };
         let mut z = vec![0.0; nd];
@@ -291,6 +302,16 @@ impl Solver<'_, '_> {
                     *rv -= alpha * hv;
                 },
             );
+            let (vx, vy) = (&self.vx, &self.vy);
+            dux.par_chunks_mut(REDUCE_CHUNK)
+                .zip(duy.par_chunks_mut(REDUCE_CHUNK))
+                .zip(vx.par_chunks(REDUCE_CHUNK).zip(vy.par_chunks(REDUCE_CHUNK)))
+                .for_each(|((a, b), (va, vb))| {
+                    for (((a, b), va), vb) in a.iter_mut().zip(b.iter_mut()).zip(va).zip(vb) {
+                        *a += alpha * va;
+                        *b += alpha * vb;
+                    }
+                });
             let (rz_new, zz) =
                 project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
             let beta = rz_new / rz;
@@ -299,8 +320,11 @@ impl Solver<'_, '_> {
             p.par_iter_mut().zip(z.par_iter()).for_each(|(pv, zv)| *pv = zv + beta * *pv);
             its += 1;
         }
-        // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc), r now G^-1-orthogonal to B.
-        project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        self.dux = dux;
+        self.duy = duy;
+        // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc). The last projection left r
+        // G^-1-orthogonal to B (B G^-1 r = 0 up to rounding), so projecting it once more
+        // would add nothing to acc but the cost of a preconditioner application.
         let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
         Ok((x, lam, its))
     }
