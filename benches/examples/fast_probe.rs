@@ -1,15 +1,16 @@
 //! Probe of the fast partial-slip solver at one grid (issue 20's problem): a Cattaneo sphere
 //! with the contact `across` cells in diameter (elements inside the circle only), T = 0.5 fP,
 //! relative residual 1e-8. Prints the Newton and CG iterations, the time of one operator
-//! product (the limit), the solve time and the error against Mindlin, and the solve time in
-//! units of one real FFT pair of the padded grid timed in the same run (issue 30's measure).
+//! product (the limit) and of one application of the preconditioner, the solve time and
+//! the error against Mindlin, and the solve time in units of one real FFT pair of the
+//! padded grid timed in the same run (issue 30's measure).
 //!
 //! `cargo run --release -p stickslip-benches --example fast_probe -- 512`
 
 use std::time::Instant;
 use stickslip_benches::process::{cpu_seconds, peak_rss};
 use stickslip_halfspace::Material;
-use stickslip_lattice::{ContactGrid, ScalarConvolution};
+use stickslip_lattice::{ContactGrid, ScalarConvolution, TensorConvolution};
 use stickslip_traction::closed::Mindlin;
 use stickslip_traction::{ElementState, FastConfig, FastProblem, Load, Tolerance};
 
@@ -54,6 +55,17 @@ fn main() {
         op.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
     }
     let product = t1.elapsed().as_secs_f64() / reps as f64;
+    // The solver's stick-block preconditioner (one unpadded periodic product on the
+    // bounding box), applied once per CG step beside the operator's product.
+    let prec = TensorConvolution::inverse_symbol(&g, &problem.compliance(), op.self_term()[0])
+        .expect("preconditioner");
+    prec.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
+    let t1 = Instant::now();
+    for _ in 0..reps {
+        prec.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
+    }
+    let prec_time = t1.elapsed().as_secs_f64() / reps as f64;
+    drop(prec);
     // The bound of issue 30: one real FFT pair (forward and inverse, no padding exploited)
     // of the padded size, timed here in the same run.
     let (mx, my) = op.fft_size();
@@ -100,12 +112,13 @@ fn main() {
     let n_stick = sol.state.iter().filter(|s| **s == ElementState::Stick).count();
     let r_stick = (n_stick as f64 * h * h / std::f64::consts::PI).sqrt();
     println!(
-        "across {across}: N = {n}, FFT {:?}, setup {setup:.2} s, product {:.1} ms; \
+        "across {across}: N = {n}, FFT {:?}, setup {setup:.2} s, product {:.1} ms, preconditioner {:.1} ms; \
          {} levels ({:.2} s), {} Newton, {} CG, {} products, residual {:.1e}; solve {secs:.2} s wall, {cpu:.2} s CPU \
          ({:.0} % in products), peak memory {:.0} MiB; stick radius {:+.2} cells, shift {:+.4} % from Mindlin; \
          one real FFT pair of {mx}x{my} {:.1} ms on 2 threads, {:.1} ms on one: the solve is {:.0} / {:.0} pairs",
         sol.info.fft_size,
         1e3 * product,
+        1e3 * prec_time,
         sol.info.levels,
         sol.info.coarse_seconds,
         sol.info.iterations,

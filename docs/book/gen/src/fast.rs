@@ -342,7 +342,7 @@ fn history(out: &mut String) -> Result<(), Error> {
     out.push_str(&format!(
         "The residual after each step, from solves stopped after k steps (the iteration is \
          deterministic, so these are the iterates of the full solve). The first step treats \
-         every loaded element as stick; the inner CG tolerance is a tenth of the outer \
+         every loaded element as stick; the inner CG tolerance is the outer \
          residual, no tighter than the last step needs, within [1e-6, 1e-2]. {} steps, {} CG iterations in all.\n\n",
         full.info.iterations, full.info.cg_iterations
     ));

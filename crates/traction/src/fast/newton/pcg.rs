@@ -52,13 +52,16 @@ pub(super) fn small_spd_solve(a: &[[f64; 3]; 3], m: usize, b: &[f64]) -> Option<
 
 impl Solver<'_, '_> {
     /// $H x$ with $H = P^{\mathsf T}KP + D$; `first[k]..first[k + 1]` are the dofs of
-    /// element $k$ (dofs are in element order).
+    /// element $k$ (dofs are in element order). With `extra` = $\Delta\mathbf q$ (element
+    /// tractions), $P^{\mathsf T}K(Px + \Delta\mathbf q) + Dx$ in the same product.
+    #[allow(clippy::too_many_arguments)]
     fn h_apply(
         &mut self,
         dofs: &[Dof],
         first: &[usize],
         diag_d: &[f64],
         x: &[f64],
+        extra: Option<(&[f64], &[f64])>,
         out: &mut [f64],
     ) {
         let mut px = std::mem::take(&mut self.wx);
@@ -70,6 +73,10 @@ impl Solver<'_, '_> {
             for i in first[k]..first[k + 1] {
                 sa += x[i] * dofs[i].e.0;
                 sb += x[i] * dofs[i].e.1;
+            }
+            if let Some((ex, ey)) = extra {
+                sa += ex[k];
+                sb += ey[k];
             }
             *a = sa;
             *b = sb;
@@ -123,7 +130,10 @@ impl Solver<'_, '_> {
     /// Algorithm II with a constraint preconditioner $G$: $\mathrm{diag}(H)$, or the Fourier
     /// preconditioner on the stick block). Stops when the projected preconditioned residual
     /// falls below `eta` times its start or below `abs_floor` (traction units). Returns $x$,
-    /// $\lambda$ (the rigid-mode increments) and the iteration count.
+    /// $\lambda$ (the rigid-mode increments) and the iteration count. With `dq`, the state's
+    /// traction has changed by $\Delta\mathbf q$ since `rhs` was evaluated: the start
+    /// residual is $\text{rhs} - P^{\mathsf T}K\Delta\mathbf q - Hx_0$, from one product.
+    /// The displacement of the step, $K(\Delta\mathbf q + Px)$, is left in `dux`, `duy`.
     #[allow(clippy::too_many_arguments, clippy::needless_range_loop)]
     pub(super) fn pcg(
         &mut self,
@@ -131,6 +141,7 @@ impl Solver<'_, '_> {
         diag_d: &[f64],
         rhs: &[f64],
         b: &[f64],
+        dq: Option<(&[f64], &[f64])>,
         eta: f64,
         abs_floor: f64,
     ) -> Result<(Vec<f64>, Vec<f64>, usize)> {
@@ -261,12 +272,24 @@ impl Solver<'_, '_> {
             .into_par_iter()
             .map(|i| gb.iter().zip(&l0).map(|(gj, l)| l * gj[i]).sum())
             .collect();
-        // With b = 0 the start is x0 = 0 and its product is skipped.
-        let mut r: Vec<f64> = if b.iter().all(|v| *v == 0.0) {
+        // The displacement of the step, K P x, is kept beside x (the displacement is linear
+        // in the traction: each CG product K P p also moves it by alpha K P p), so the Newton
+        // loop needs no product after the step.
+        let mut dux = std::mem::take(&mut self.dux);
+        let mut duy = std::mem::take(&mut self.duy);
+        // With b = 0 (and no traction change) the start is x0 = 0 and its product is skipped.
+        let dq = dq.filter(|(a, b)| a.iter().chain(b.iter()).any(|v| *v != 0.0));
+        let mut r: Vec<f64> = if dq.is_none() && b.iter().all(|v| *v == 0.0) {
+            dux.par_iter_mut().zip(duy.par_iter_mut()).for_each(|(a, b)| {
+                *a = 0.0;
+                *b = 0.0;
+            });
             rhs.to_vec()
         } else {
             let mut hx = vec![0.0; nd];
-            self.h_apply(dofs, &first, diag_d, &x, &mut hx);
+            self.h_apply(dofs, &first, diag_d, &x, dq, &mut hx);
+            dux.copy_from_slice(&self.vx);
+            duy.copy_from_slice(&self.vy);
             rhs.par_iter().zip(hx.par_iter()).map(|(a, b)| a - b).collect()
         };
         let mut z = vec![0.0; nd];
@@ -279,7 +302,7 @@ impl Solver<'_, '_> {
         let mut hp = vec![0.0; nd];
         let mut its = 0;
         while znorm > stop && its < self.p.config.max_cg() {
-            self.h_apply(dofs, &first, diag_d, &p, &mut hp);
+            self.h_apply(dofs, &first, diag_d, &p, None, &mut hp);
             let php = red.sum(nd, |r| r.map(|k| p[k] * hp[k]).sum());
             if php.is_nan() || php <= 0.0 {
                 return Err(Error::NotPositiveDefinite { index: its });
@@ -291,6 +314,16 @@ impl Solver<'_, '_> {
                     *rv -= alpha * hv;
                 },
             );
+            let (vx, vy) = (&self.vx, &self.vy);
+            dux.par_chunks_mut(REDUCE_CHUNK)
+                .zip(duy.par_chunks_mut(REDUCE_CHUNK))
+                .zip(vx.par_chunks(REDUCE_CHUNK).zip(vy.par_chunks(REDUCE_CHUNK)))
+                .for_each(|((a, b), (va, vb))| {
+                    for (((a, b), va), vb) in a.iter_mut().zip(b.iter_mut()).zip(va).zip(vb) {
+                        *a += alpha * va;
+                        *b += alpha * vb;
+                    }
+                });
             let (rz_new, zz) =
                 project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
             let beta = rz_new / rz;
@@ -299,8 +332,11 @@ impl Solver<'_, '_> {
             p.par_iter_mut().zip(z.par_iter()).for_each(|(pv, zv)| *pv = zv + beta * *pv);
             its += 1;
         }
-        // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc), r now G^-1-orthogonal to B.
-        project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        self.dux = dux;
+        self.duy = duy;
+        // Multipliers: B^T lambda = H x - rhs = -(r + B^T acc). The last projection left r
+        // G^-1-orthogonal to B (B G^-1 r = 0 up to rounding), so projecting it once more
+        // would add nothing to acc but the cost of a preconditioner application.
         let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
         Ok((x, lam, its))
     }
