@@ -61,10 +61,20 @@ impl NormalOperator {
                         }
                     },
                 );
+                // K e_0, the unit pressure on cell 0 written as the product's first row.
                 let mut column = vec![0.0; nx * ny];
-                let mut unit = vec![0.0; nx * ny];
-                unit[0] = 1.0;
-                conv.apply(&unit, &mut column, &mut conv.make_scratch());
+                conv.apply_rows(
+                    &mut vec![(); nx * ny],
+                    |j, _, row| {
+                        row.fill(0.0);
+                        if j == 0 {
+                            row[0] = 1.0;
+                        }
+                    },
+                    &mut column,
+                    |_, _, _| (),
+                    &mut conv.make_scratch(),
+                );
                 (conv, column)
             }
         };
@@ -133,25 +143,36 @@ impl NormalOperator {
     /// # Panics
     /// If a length differs from $n_xn_y$.
     pub fn apply(&self, p: &[f64], u: &mut [f64], scratch: &mut NormalScratch) {
-        self.conv.apply(p, u, &mut scratch.product);
+        let nx = self.nx;
+        assert_eq!(p.len(), nx * self.ny, "lattice length");
+        let mut none = vec![(); nx * self.ny];
+        self.conv.apply_rows(
+            &mut none,
+            |j, _, row| row.copy_from_slice(&p[j * nx..(j + 1) * nx]),
+            u,
+            |_, _, _| (),
+            &mut scratch.product,
+        );
     }
 
-    /// $u = Kq$ with the rows of $q$ written by `fill(j, row)` (`row[..nx]`) and
-    /// `finish(j, row)` called on each finished row of $u$, its results returned in row
-    /// order ([`ScalarConvolution::apply_rows`]): a solver's passes over the lattice ride
-    /// along with the transforms instead of reading the arrays again.
-    pub fn apply_rows<R: Send>(
+    /// $u = Kq$ with the rows of $q$ written by `fill(j, cells, row)` (`row[..nx]`) and
+    /// `finish(j, cells, row)` called on each finished row of $u$, each with row $j$ of the
+    /// caller's array `cells`, their results returned in row order
+    /// ([`ScalarConvolution::apply_rows`]): a solver's passes over the lattice ride along
+    /// with the transforms instead of reading the arrays again.
+    pub fn apply_rows<C: Send, F: Send, R: Send>(
         &self,
-        fill: impl Fn(usize, &mut [f64]) + Sync,
+        cells: &mut [C],
+        fill: impl Fn(usize, &mut [C], &mut [f64]) -> F + Sync,
         u: &mut [f64],
-        finish: impl Fn(usize, &mut [f64]) -> R + Sync,
+        finish: impl Fn(usize, &mut [C], &mut [f64]) -> R + Sync,
         scratch: &mut NormalScratch,
-    ) -> Vec<R> {
-        self.conv.apply_rows(fill, u, finish, &mut scratch.product)
+    ) -> (Vec<F>, Vec<R>) {
+        self.conv.apply_rows(cells, fill, u, finish, &mut scratch.product)
     }
 
     /// $z = Mq$ for the spectral preconditioner $M$, row by row as
-    /// [`NormalOperator::apply_rows`] (the rows of $q$ in single precision). $M$ is the
+    /// [`NormalOperator::apply_rows`], in single precision ($q$'s rows and $z$). $M$ is the
     /// inverse of the half-space's transfer function, $\hat M(\mathbf q) = |\mathbf q|/c_1$
     /// (the transfer of Stanley & Kato 1997; its inverse as a preconditioner as in
     /// Vollebregt 2014, *J. Comput. Phys.* 257), on the lattice's torus: the period itself
@@ -161,14 +182,15 @@ impl NormalOperator {
     /// positive definite. The transforms run in single precision: a preconditioner needs
     /// its direction, not its digits (the solve's accuracy rests on the products with $K$),
     /// and half the memory traffic makes it nearly twice as fast.
-    pub fn precondition_rows<R: Send>(
+    pub fn precondition_rows<C: Send, F: Send, R: Send>(
         &self,
-        fill: impl Fn(usize, &mut [f32]) + Sync,
-        z: &mut [f64],
-        finish: impl Fn(usize, &mut [f64]) -> R + Sync,
+        cells: &mut [C],
+        fill: impl Fn(usize, &mut [C], &mut [f32]) -> F + Sync,
+        z: &mut [f32],
+        finish: impl Fn(usize, &mut [C], &mut [f32]) -> R + Sync,
         scratch: &mut NormalScratch,
-    ) -> Vec<R> {
-        self.inverse.apply_rows(fill, z, finish, &mut scratch.inverse)
+    ) -> (Vec<F>, Vec<R>) {
+        self.inverse.apply_rows(cells, fill, z, finish, &mut scratch.inverse)
     }
 
     /// The preconditioner's FFT size (the torus of [`NormalOperator::precondition_rows`]).

@@ -152,19 +152,19 @@ impl<T: Precision> ScalarConvolution<T> {
         ny: usize,
         (mx, my): (usize, usize),
         (lx, ly): (f64, f64),
-        transfer: impl Fn(f64, f64) -> f64,
+        transfer: impl Fn(f64, f64) -> f64 + Sync,
     ) -> Self {
         let mut op = Self::plan(nx, ny, mx, my);
         let (mxh, myh) = (op.mxh, op.myh);
         let scale = 1.0 / (mx as f64 * my as f64);
         let two_pi = 2.0 * std::f64::consts::PI;
-        let mut spectrum = Vec::with_capacity(mxh * myh);
-        for i in 0..mxh {
-            for j in 0..myh {
-                let t = transfer(two_pi * i as f64 / lx, two_pi * j as f64 / ly);
-                spectrum.push(T::of(t * scale));
+        let mut spectrum = vec![T::of(0.0); mxh * myh];
+        spectrum.par_chunks_mut(myh).enumerate().for_each(|(i, row)| {
+            let kx = two_pi * i as f64 / lx;
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = T::of(transfer(kx, two_pi * j as f64 / ly) * scale);
             }
-        }
+        });
         op.spectrum = spectrum;
         op
     }
@@ -195,51 +195,70 @@ impl<T: Precision> ScalarConvolution<T> {
     pub fn apply(&self, q: &[f64], u: &mut [f64], s: &mut ScalarScratch<T>) {
         let nx = self.nx;
         assert_eq!(q.len(), nx * self.ny, "lattice length");
+        assert_eq!(u.len(), nx * self.ny, "lattice length");
+        let mut out = vec![T::of(0.0); nx * self.ny];
         self.apply_rows(
-            |j, row| {
+            u,
+            |j, _, row| {
                 for (r, v) in row.iter_mut().zip(&q[j * nx..(j + 1) * nx]) {
                     *r = T::of(*v);
                 }
             },
-            u,
-            |_, _| (),
+            &mut out,
+            |_, u, out| {
+                for (u, o) in u.iter_mut().zip(out.iter()) {
+                    *u = (*o).into();
+                }
+            },
             s,
         );
     }
 
     /// $u = K * q$ with the input and the output handled row by row, so that a caller's
-    /// passes over the lattice ride along with the transforms: `fill(j, row)` writes lattice
-    /// row $j$ of $q$ into `row[..nx]` (the rest of the slice is zero and must stay so), and
-    /// `finish(j, row)` is called on each row of $u$ once it is written (it may change it,
-    /// e.g. mask it); its results come back in row order, so sums built from them do not
-    /// depend on the number of threads. The scratch may be larger than this convolution
-    /// needs (another's, sized for a larger torus).
+    /// passes over the lattice ride along with the transforms. `fill(j, cells, row)` writes
+    /// lattice row $j$ of $q$ into `row[..nx]` (the rest of the slice is zero and must stay
+    /// so), with row $j$ of the caller's array `cells` at hand to read and write; `finish(j,
+    /// cells, out)` is called on each row of $u$ once it is written (it may change it, e.g.
+    /// mask it), again with row $j$ of `cells`. Both results come back in row order, so sums
+    /// built from them do not depend on the number of threads. The output is in the
+    /// transforms' precision. The scratch may be larger than this convolution needs
+    /// (another's, sized for a larger torus).
     ///
     /// # Panics
-    /// If `u` has not $n_xn_y$ values, or the scratch is too small.
-    pub fn apply_rows<R: Send>(
+    /// If `u` or `cells` has not $n_xn_y$ values, or the scratch is too small.
+    pub fn apply_rows<C: Send, F: Send, R: Send>(
         &self,
-        fill: impl Fn(usize, &mut [T]) + Sync,
-        u: &mut [f64],
-        finish: impl Fn(usize, &mut [f64]) -> R + Sync,
+        cells: &mut [C],
+        fill: impl Fn(usize, &mut [C], &mut [T]) -> F + Sync,
+        u: &mut [T],
+        finish: impl Fn(usize, &mut [C], &mut [T]) -> R + Sync,
         s: &mut ScalarScratch<T>,
-    ) -> Vec<R> {
+    ) -> (Vec<F>, Vec<R>) {
         let (nx, ny, mx, mxh) = (self.nx, self.ny, self.mx, self.mxh);
         assert_eq!(u.len(), nx * ny, "lattice length");
+        assert_eq!(cells.len(), nx * ny, "cells length");
         assert!(s.0.len() >= ny * mxh, "scratch too small");
         let rowspec = &mut s.0[..ny * mxh];
         let zero = T::of(0.0);
-        rowspec.par_chunks_mut(mxh).enumerate().for_each_init(
-            || (vec![zero; mx], self.r2c.make_scratch_vec()),
-            |(row, scr), (j, out)| {
-                row.fill(zero);
-                fill(j, &mut row[..nx]);
-                // Lengths are consistent by construction; realfft only errs on length.
-                let _ = self.r2c.process_with_scratch(row, out, scr);
-            },
-        );
+        let mut filled = Vec::with_capacity(ny);
+        rowspec
+            .par_chunks_mut(mxh)
+            .zip(cells.par_chunks_mut(nx))
+            .enumerate()
+            .map_init(
+                || (vec![zero; mx], self.r2c.make_scratch_vec()),
+                |(row, scr), (j, (out, c))| {
+                    // The fill writes the first nx entries; the padding stays zero.
+                    row[nx..].fill(zero);
+                    let f = fill(j, c, &mut row[..nx]);
+                    // Lengths are consistent by construction; realfft only errs on length.
+                    let _ = self.r2c.process_with_scratch(row, out, scr);
+                    f
+                },
+            )
+            .collect_into_vec(&mut filled);
         self.columns(rowspec);
-        self.rows_inverse(rowspec, u, finish)
+        (filled, self.rows_inverse(rowspec, cells, u, finish))
     }
 
     /// The column pass, in place: each task owns one block of BLOCK columns (their segments of
@@ -294,38 +313,43 @@ impl<T: Precision> ScalarConvolution<T> {
         });
     }
 
-    /// Inverse row transforms of the row spectra into `lat` (row-major $n_y\times n_x$, in
-    /// double precision), then `finish` on each row; its results in row order.
-    fn rows_inverse<R: Send>(
+    /// Inverse row transforms of the row spectra into `lat` (row-major $n_y\times n_x$;
+    /// directly when the torus is the lattice, else through a row of the torus), then
+    /// `finish` on each row with the same row of `cells`; its results in row order.
+    fn rows_inverse<C: Send, R: Send>(
         &self,
         rowspec: &mut [Complex<T>],
-        lat: &mut [f64],
-        finish: impl Fn(usize, &mut [f64]) -> R + Sync,
+        cells: &mut [C],
+        lat: &mut [T],
+        finish: impl Fn(usize, &mut [C], &mut [T]) -> R + Sync,
     ) -> Vec<R> {
         let (mx, mxh, nx) = (self.mx, self.mxh, self.nx);
         let zero = T::of(0.0);
         let blocks: Vec<Vec<R>> = rowspec
             .par_chunks_mut(BLOCK * mxh)
-            .zip(lat.par_chunks_mut(BLOCK * nx))
+            .zip(lat.par_chunks_mut(BLOCK * nx).zip(cells.par_chunks_mut(BLOCK * nx)))
             .enumerate()
             .map_init(
                 || (vec![zero; mx], self.c2r.make_scratch_vec()),
-                |(row, scr), (jb, (rsb, outb))| {
+                |(row, scr), (jb, (rsb, (outb, cb)))| {
                     let mut done = Vec::with_capacity(BLOCK);
-                    for (b, (rs, out)) in
-                        rsb.chunks_exact_mut(mxh).zip(outb.chunks_exact_mut(nx)).enumerate()
-                    {
+                    let rows = rsb
+                        .chunks_exact_mut(mxh)
+                        .zip(outb.chunks_exact_mut(nx).zip(cb.chunks_exact_mut(nx)));
+                    for (b, (rs, (out, c))) in rows.enumerate() {
                         // The DC and (even sizes) Nyquist bins of a real signal are real;
                         // clear the rounding.
                         rs[0].im = zero;
                         if mx % 2 == 0 {
                             rs[mxh - 1].im = zero;
                         }
-                        let _ = self.c2r.process_with_scratch(rs, row, scr);
-                        for (o, r) in out.iter_mut().zip(row.iter()) {
-                            *o = (*r).into();
+                        if mx == nx {
+                            let _ = self.c2r.process_with_scratch(rs, out, scr);
+                        } else {
+                            let _ = self.c2r.process_with_scratch(rs, row, scr);
+                            out.copy_from_slice(&row[..nx]);
                         }
-                        done.push(finish(jb * BLOCK + b, out));
+                        done.push(finish(jb * BLOCK + b, c, out));
                     }
                     done
                 },

@@ -115,11 +115,16 @@ impl NormalProblem<'_> {
         let mut u = vec![0.0; n];
         // The gap without the approach, g0 + u (the approach is subtracted where it is used).
         let mut g = vec![0.0; n];
-        // The search direction, and the residual z (preconditioned) and K t in turn.
+        // The free set 0 < p < cap, one byte a cell (written with the gap; read by the
+        // passes that only need the set, instead of the pressure).
+        let mut free = vec![0u8; n];
+        // The search direction, and K t.
         let mut t = vec![0.0; n];
         let mut r = vec![0.0; n];
-        // The previous gap on the contact set, for the Polak-Ribiere coefficient (single
-        // precision: it only enters the coefficient).
+        // The residual z (preconditioned), and the previous gap on the contact set, for the
+        // Polak-Ribiere coefficient; both in single precision (the preconditioner's transforms
+        // are, and the previous gap only enters the coefficient).
+        let mut z = vec![0.0f32; n];
         let mut gp = vec![0.0f32; n];
         let mut rz_old = 0.0;
         let mut conjugate = false;
@@ -132,38 +137,58 @@ impl NormalProblem<'_> {
         // Force control: the factor that rescales p (and u) to the load. The arrays hold
         // p / scale and u / scale until the step writes them anyway.
         let mut scale = 1.0;
+        // The gap, the free set and their sums written by the step itself (elastic, when it
+        // neither clipped nor re-entered a cell, so that nothing corrects u after it), and
+        // whether the step should try: it does after a step without changes.
+        let mut fresh: Option<GapSums> = None;
+        let mut fuse = false;
         let mut delta;
         let mut res;
         let sum_target = force.map(|f| f / area);
         loop {
             if stale {
-                if scale != 1.0 {
-                    let f = scale;
-                    p.par_iter_mut().for_each(|p| *p *= f);
-                    scale = 1.0;
-                }
-                op.apply(&p, &mut u, &mut scratch);
+                // u = K p, the pending scale applied to p on the way in.
+                let f = scale;
+                op.apply_rows(
+                    &mut p,
+                    |_, p, row| {
+                        if f != 1.0 {
+                            p.iter_mut().for_each(|p| *p *= f);
+                        }
+                        row.copy_from_slice(p);
+                    },
+                    &mut u,
+                    |_, _, _| (),
+                    &mut scratch,
+                );
+                scale = 1.0;
                 products += 1;
                 (stale, exact) = (false, true);
+                fresh = None;
             }
-            // The gap without the approach, and what the approach and the residuals need, in
-            // one pass.
+            // The gap without the approach, the free set, and what the approach and the
+            // residuals need, in one pass (unless the step wrote them).
             let f = scale;
-            let a = in_order(
-                g.par_chunks_mut(BLOCK)
-                    .zip(u.par_chunks(BLOCK))
-                    .zip(g0.par_chunks(BLOCK).zip(p.par_chunks(BLOCK)))
-                    .map(|((g, u), (g0, p))| {
-                        let mut a = GapSums::EMPTY;
-                        for (g, (u, (g0, p))) in g.iter_mut().zip(u.iter().zip(g0.iter().zip(p))) {
-                            *g = f * u + g0;
-                            a.add(*g, f * p, *p >= cap);
-                        }
-                        a
-                    }),
-            )
-            .into_iter()
-            .fold(GapSums::EMPTY, GapSums::merge);
+            let a = match fresh.take() {
+                Some(a) => a,
+                None => in_order(
+                    g.par_chunks_mut(BLOCK)
+                        .zip(free.par_chunks_mut(BLOCK))
+                        .zip(u.par_chunks(BLOCK).zip(g0.par_chunks(BLOCK).zip(p.par_chunks(BLOCK))))
+                        .map(|((g, fr), (u, (g0, p)))| {
+                            let mut a = GapSums::EMPTY;
+                            let cells = g.iter_mut().zip(fr).zip(u.iter().zip(g0.iter().zip(p)));
+                            for ((g, fr), (u, (g0, p))) in cells {
+                                *g = f * u + g0;
+                                *fr = u8::from(*p > 0.0 && *p < cap);
+                                a.add(*g, f * p, *p >= cap);
+                            }
+                            a
+                        }),
+                )
+                .into_iter()
+                .fold(GapSums::EMPTY, GapSums::merge),
+            };
             delta = match load {
                 NormalLoad::Approach(d) => d,
                 NormalLoad::Force(_) if a.cells == 0 && a.max_plastic.is_finite() => {
@@ -198,44 +223,43 @@ impl NormalProblem<'_> {
             }
             iterations += 1;
             let (c, mean_force) = (a.cells, force.is_some());
-            // The preconditioned residual z = M (g - delta) on the contact set, into r, with
-            // its sums: sum z, sum (g - delta) z, sum gp z, sum gp over the contact set.
+            // The preconditioned residual z = M (g - delta) on the free set, with its sums:
+            // sum z, sum (g - delta) z, sum gp z, sum gp over the free set; gp then becomes
+            // this residual, in the same pass.
             let zs = if spectral {
                 pre += 1;
-                let (p, g, gp) = (&p, &g, &gp);
+                let (g, fr) = (&g, &free);
                 op.precondition_rows(
-                    |j, row| {
-                        let (p, g) = (&p[j * nx..(j + 1) * nx], &g[j * nx..(j + 1) * nx]);
-                        for (v, (p, g)) in row.iter_mut().zip(p.iter().zip(g)) {
-                            *v = if *p > 0.0 && *p < cap { (g - delta) as f32 } else { 0.0 };
+                    &mut gp,
+                    |j, _, row| {
+                        let cells = fr[j * nx..(j + 1) * nx].iter().zip(&g[j * nx..(j + 1) * nx]);
+                        for (v, (fr, g)) in row.iter_mut().zip(cells) {
+                            *v = if *fr != 0 { (g - delta) as f32 } else { 0.0 };
                         }
                     },
-                    &mut r,
-                    |j, z| {
-                        let cells = p[j * nx..(j + 1) * nx]
-                            .iter()
-                            .zip(&g[j * nx..(j + 1) * nx])
-                            .zip(&gp[j * nx..(j + 1) * nx]);
+                    &mut z,
+                    |j, gp, z| {
+                        let cells = fr[j * nx..(j + 1) * nx].iter().zip(&g[j * nx..(j + 1) * nx]);
                         let mut acc = [0.0; 4];
-                        for (z, ((p, g), gp)) in z.iter_mut().zip(cells) {
-                            free_cell(z, *p, *g, *gp, cap, delta, &mut acc);
+                        for (z, ((fr, g), gp)) in z.iter_mut().zip(cells.zip(gp.iter_mut())) {
+                            free_cell(z, *fr != 0, *g, gp, delta, &mut acc);
                         }
                         acc
                     },
                     &mut scratch,
                 )
+                .1
             } else {
                 in_order(
-                    r.par_chunks_mut(BLOCK)
-                        .zip(p.par_chunks(BLOCK).zip(g.par_chunks(BLOCK).zip(gp.par_chunks(BLOCK))))
-                        .map(|(z, (p, (g, gp)))| {
+                    z.par_chunks_mut(BLOCK)
+                        .zip(gp.par_chunks_mut(BLOCK))
+                        .zip(free.par_chunks(BLOCK).zip(g.par_chunks(BLOCK)))
+                        .map(|((z, gp), (fr, g))| {
                             let mut acc = [0.0; 4];
-                            for (z, (p, (g, gp))) in
-                                z.iter_mut().zip(p.iter().zip(g.iter().zip(gp)))
-                            {
+                            for ((z, gp), (fr, g)) in z.iter_mut().zip(gp).zip(fr.iter().zip(g)) {
                                 // Unpreconditioned: the direction is the residual itself.
-                                *z = g - delta;
-                                free_cell(z, *p, *g, *gp, cap, delta, &mut acc);
+                                *z = (g - delta) as f32;
+                                free_cell(z, *fr != 0, *g, gp, delta, &mut acc);
                             }
                             acc
                         }),
@@ -252,50 +276,48 @@ impl NormalProblem<'_> {
             // new residual against the old direction).
             let beta = if conjugate && rz_old > 0.0 { ((rz - zgp) / rz_old).max(0.0) } else { 0.0 };
             rz_old = rz;
-            // The direction t = (z - m) + beta t on the contact set, gp = g - delta there, and
-            // sum t, sum t^2, sum (g - delta) t, and the first breakpoint min p / t (t > 0).
-            let e = in_order(
-                t.par_chunks_mut(BLOCK)
-                    .zip(gp.par_chunks_mut(BLOCK))
-                    .zip(r.par_chunks(BLOCK).zip(g.par_chunks(BLOCK).zip(p.par_chunks(BLOCK))))
-                    .map(|((t, gp), (z, (g, p)))| {
+            // r = K t for the direction t = (z - m) + beta t on the free set, written row by
+            // row as the product's input: with sum t, sum t^2, sum (g - delta) t, and (where
+            // the step may stop at it) the first breakpoint min p / t (t > 0), and from the
+            // product sum r and sum r t over the free set.
+            let breakpoint = null_mode.is_some();
+            let (dir, kt) = {
+                let (p, g, fr, z) = (&p, &g, &free, &z);
+                op.apply_rows(
+                    &mut t,
+                    |j, t, row| {
+                        let span = j * nx..(j + 1) * nx;
+                        let cells =
+                            fr[span.clone()].iter().zip(&g[span.clone()]).zip(&z[span.clone()]);
                         let mut acc = [0.0, 0.0, 0.0, f64::INFINITY];
-                        for ((t, gp), (z, (g, p))) in
-                            t.iter_mut().zip(gp.iter_mut()).zip(z.iter().zip(g.iter().zip(p)))
+                        for (i, ((t, v), ((fr, g), z))) in
+                            t.iter_mut().zip(row.iter_mut()).zip(cells).enumerate()
                         {
-                            if *p > 0.0 && *p < cap {
+                            if *fr != 0 {
                                 let gd = g - delta;
-                                *t = (z - m) + beta * *t;
-                                *gp = gd as f32;
+                                *t = (f64::from(*z) - m) + beta * *t;
                                 acc = [acc[0] + *t, acc[1] + *t * *t, acc[2] + gd * *t, acc[3]];
-                                if *t > 0.0 {
-                                    acc[3] = acc[3].min(f * p / *t);
-                                } else if *t < 0.0 && capped {
-                                    acc[3] = acc[3].min((f * p - cap) / *t);
+                                if breakpoint {
+                                    let p = p[j * nx + i];
+                                    if *t > 0.0 {
+                                        acc[3] = acc[3].min(f * p / *t);
+                                    } else if *t < 0.0 && capped {
+                                        acc[3] = acc[3].min((f * p - cap) / *t);
+                                    }
                                 }
                             } else {
                                 *t = 0.0;
-                                *gp = 0.0;
                             }
+                            *v = *t;
                         }
                         acc
-                    }),
-            )
-            .into_iter()
-            .fold([0.0, 0.0, 0.0, f64::INFINITY], |x, y| {
-                [x[0] + y[0], x[1] + y[1], x[2] + y[2], x[3].min(y[3])]
-            });
-            // r = K t, with sum r and sum r t over the contact set.
-            let kt = {
-                let (p, t) = (&p, &t);
-                op.apply_rows(
-                    |j, row| row[..nx].copy_from_slice(&t[j * nx..(j + 1) * nx]),
+                    },
                     &mut r,
-                    |j, r| {
-                        let cells = p[j * nx..(j + 1) * nx].iter().zip(&t[j * nx..(j + 1) * nx]);
+                    |j, t, r| {
+                        let cells = fr[j * nx..(j + 1) * nx].iter().zip(t.iter());
                         let mut acc = [0.0; 2];
-                        for (r, (p, t)) in r.iter().zip(cells) {
-                            if *p > 0.0 && *p < cap {
+                        for (r, (fr, t)) in r.iter().zip(cells) {
+                            if *fr != 0 {
                                 acc = [acc[0] + r, acc[1] + r * t];
                             }
                         }
@@ -303,9 +325,11 @@ impl NormalProblem<'_> {
                     },
                     &mut scratch,
                 )
-            }
-            .into_iter()
-            .fold([0.0; 2], |x, y| [x[0] + y[0], x[1] + y[1]]);
+            };
+            let e = dir.into_iter().fold([0.0, 0.0, 0.0, f64::INFINITY], |x, y| {
+                [x[0] + y[0], x[1] + y[1], x[2] + y[2], x[3].min(y[3])]
+            });
+            let kt = kt.into_iter().fold([0.0; 2], |x, y| [x[0] + y[0], x[1] + y[1]]);
             products += 1;
             // tau = sum (g - delta) t / sum (r - rbar) t over I_c (force control: rbar the
             // mean of r there); re-entering cells take -(g - delta) sum t^2 / sum (r - rbar) t,
@@ -340,9 +364,17 @@ impl NormalProblem<'_> {
                     tau_e = tau_e.min(1.0 / kmin);
                 }
             }
+            // Elastic: the factor that will bring the force back to the load if the step
+            // changes no cell (the pressure sum then moves by -tau sum t), with which the
+            // step can write the next gap itself.
+            let next = match sum_target {
+                Some(target) if a.pressure - tau * e[0] > 0.0 => target / (a.pressure - tau * e[0]),
+                _ => 1.0,
+            };
             // Step, projection, re-entry of penetrating cells, u -= tau K t, and the new force,
             // in one pass; `changes` the departures from p - tau t (clipped or re-entered
-            // cells), whose columns correct u.
+            // cells), whose columns correct u. With `fuse`, also the next gap, free set and
+            // sums at the scale `next`.
             let blocks = if capped {
                 in_order(
                     p.par_chunks_mut(BLOCK)
@@ -354,16 +386,21 @@ impl NormalProblem<'_> {
                         }),
                 )
             } else {
+                let fuse = fuse;
                 in_order(
                     p.par_chunks_mut(BLOCK)
                         .zip(u.par_chunks_mut(BLOCK))
-                        .zip(g.par_chunks(BLOCK).zip(t.par_chunks(BLOCK).zip(r.par_chunks(BLOCK))))
+                        .zip(g.par_chunks_mut(BLOCK).zip(free.par_chunks_mut(BLOCK)))
+                        .zip(t.par_chunks(BLOCK).zip(r.par_chunks(BLOCK).zip(g0.par_chunks(BLOCK))))
                         .enumerate()
-                        .map(|(b, ((p, u), (g, (t, r))))| {
-                            let (mut ch, mut sum) = (Vec::new(), 0.0);
-                            let cells =
-                                p.iter_mut().zip(u.iter_mut().zip(g.iter().zip(t.iter().zip(r))));
-                            for (i, (p, (u, (g, (t, r))))) in cells.enumerate() {
+                        .map(|(b, (((p, u), (g, fr)), (t, (r, g0))))| {
+                            let (mut ch, mut sum, mut a) = (Vec::new(), 0.0, GapSums::EMPTY);
+                            let cells = p
+                                .iter_mut()
+                                .zip(u.iter_mut())
+                                .zip(g.iter_mut().zip(fr.iter_mut()))
+                                .zip(t.iter().zip(r.iter().zip(g0)));
+                            for (i, (((p, u), (g, fr)), (t, (r, g0)))) in cells.enumerate() {
                                 let k = b * BLOCK + i;
                                 *u = f * *u - tau * r;
                                 if *p > 0.0 {
@@ -373,19 +410,29 @@ impl NormalProblem<'_> {
                                         ch.push((k, -free));
                                     }
                                 } else if *g < delta {
-                                    *p = tau_e * (delta - g);
+                                    *p = tau_e * (delta - *g);
                                     ch.push((k, *p));
                                 }
                                 sum += *p;
+                                if fuse {
+                                    *g = next * *u + g0;
+                                    *fr = u8::from(*p > 0.0);
+                                    a.add(*g, next * *p, false);
+                                }
                             }
-                            Step { changes: ch, sum }
+                            Step { changes: ch, sum, sums: a }
                         }),
                 )
             };
             scale = 1.0;
             let sum = blocks.iter().fold(0.0, |a, b| a + b.sum);
+            let sums = blocks.iter().fold(GapSums::EMPTY, |a, b| GapSums::merge(a, b.sums));
             let changes: Vec<(usize, f64)> = blocks.into_iter().flat_map(|b| b.changes).collect();
             conjugate = true;
+            // A step without changes that wrote the next gap: it stands at the scale `next`
+            // (the load's, to rounding) and needs no gap pass; the next step tries again.
+            let wrote = fuse && !capped && changes.is_empty();
+            fuse = !capped && changes.is_empty();
             // Under a cap and a force: back to the force by the projection when the step
             // has moved it off by more than PROJECTION_SLACK of the tolerance (the stop
             // checks the force residual all the same); u then needs a full product.
@@ -446,8 +493,14 @@ impl NormalProblem<'_> {
                     }
                 }
             }
+            if wrote && !stale {
+                if force.is_some() {
+                    scale = next;
+                }
+                fresh = Some(sums);
+            }
         }
-        drop((u, t, r, gp, scratch));
+        drop((u, t, r, z, gp, free, scratch));
         if scale != 1.0 {
             p.par_iter_mut().for_each(|p| *p *= scale);
         }
@@ -494,6 +547,8 @@ pub(super) enum Start<'b> {
 struct Step {
     changes: Vec<(usize, f64)>,
     sum: f64,
+    /// The next gap's sums, when the step wrote it.
+    sums: GapSums,
 }
 
 /// The step of the iteration on one block under a cap (approach control; the block's first
@@ -514,7 +569,7 @@ fn step_capped(
     delta: f64,
     cap: f64,
 ) -> Step {
-    let mut s = Step { changes: Vec::new(), sum: 0.0 };
+    let mut s = Step { changes: Vec::new(), sum: 0.0, sums: GapSums::EMPTY };
     let cells = p.iter_mut().zip(u.iter_mut().zip(g.iter().zip(t.iter().zip(r))));
     for (i, (p, (u, (g, (t, r))))) in cells.enumerate() {
         let k = k0 + i;
@@ -614,15 +669,17 @@ impl GapSums {
     }
 }
 
-/// One cell of the search-direction pass: on the free set ($0 < p < H$) add the direction
-/// `z`, its product with the residual $g - \delta$, and the preconditioner's weight to the
-/// block sums `acc`; elsewhere zero the direction.
+/// One cell of the preconditioned residual's pass: on the free set add the residual `z`, its
+/// product with the gap $g - \delta$ and with the previous gap `gp`, and `gp`, to the block
+/// sums `acc`, and make `gp` this gap; elsewhere zero both.
 #[inline]
-fn free_cell(z: &mut f64, p: f64, g: f64, gp: f32, cap: f64, delta: f64, acc: &mut [f64; 4]) {
-    if p > 0.0 && p < cap {
-        let gp = f64::from(gp);
-        *acc = [acc[0] + *z, acc[1] + (g - delta) * *z, acc[2] + gp * *z, acc[3] + gp];
+fn free_cell(z: &mut f32, free: bool, g: f64, gp: &mut f32, delta: f64, acc: &mut [f64; 4]) {
+    if free {
+        let (zz, old, gd) = (f64::from(*z), f64::from(*gp), g - delta);
+        *acc = [acc[0] + zz, acc[1] + gd * zz, acc[2] + old * zz, acc[3] + old];
+        *gp = gd as f32;
     } else {
         *z = 0.0;
+        *gp = 0.0;
     }
 }

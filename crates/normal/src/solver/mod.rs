@@ -77,9 +77,14 @@
 //! columns of the few cells clipped or re-entered, added directly when at most 16, else a
 //! full product of the new $p$), with a full product every 50 iterations and before the stop.
 //! The preconditioner is one more FFT pair, unpadded and in single precision (a quarter to
-//! a half of a product). The passes over the lattice that the iteration needs (the gap and
-//! its sums, the masked residual, the direction, the step) ride along with the transforms'
-//! own row passes where they can ([`NormalOperator::apply_rows`]). Displacement control is
+//! a half of a product). The passes over the lattice that the iteration needs ride along
+//! with the transforms' own row passes where they can ([`NormalOperator::apply_rows`]): the
+//! masked residual and the previous one with the preconditioner, the direction with the
+//! product $K\mathbf t$, the pending rescaling of $p$ with a full product; after a step that
+//! clipped and re-entered no cell, the step itself writes the next gap, its sums and the
+//! free set (at the rescaling that will bring the force back to the load, known before the
+//! step in that case), so that no separate pass over the gap is needed. The passes that only
+//! need the free set read it as a byte a cell. Displacement control is
 //! the same iteration with $\delta$ fixed, without the centring and the rescaling (the
 //! bound-constrained quadratic program $\min \tfrac12 p^{\mathsf T}Kp + (g^0-\delta)^{\mathsf T}p$,
 //! $p\ge0$); on a periodic lattice, where a uniform pressure moves nothing, a step whose
@@ -509,12 +514,13 @@ impl<'a> NormalProblem<'a> {
     /// The working memory of a solve on an `nx` x `ny` lattice (bytes), beyond the caller's
     /// initial gap: the operator (the kernel's half spectrum, the column $Ke_0$, the
     /// preconditioner's spectrum in single precision), the row spectra of the two transforms,
-    /// the five lattice vectors of the iteration and the previous gap in single precision,
-    /// and the contact flags of the result. The coarser levels of a nested start need about
-    /// a quarter of it and are released before the finest lattice's vectors exist; the free
-    /// kernel's set-up needs less than the iteration. In doubles per cell: about 8.5
-    /// periodic and 10.3 free (issue 30: at most 13 with the gap; measured peak resident
-    /// memory of the whole process in `docs/peers.md`).
+    /// the five lattice vectors of the iteration, the preconditioned residual and the
+    /// previous gap in single precision, the free set (a byte a cell), and the contact flags
+    /// of the result. The coarser levels of a nested start need about a quarter of it and are
+    /// released before the finest lattice's vectors exist; the free kernel's set-up needs
+    /// less than the iteration. In doubles per cell: about 9.1 periodic and 10.9 free
+    /// (issue 30: at most 13 with the gap; measured peak resident memory of the whole
+    /// process in `docs/peers.md`).
     #[must_use]
     pub fn memory_bytes(nx: usize, ny: usize, boundary: Boundary) -> u64 {
         let n = (nx * ny) as u64;
@@ -530,7 +536,7 @@ impl<'a> NormalProblem<'a> {
         let half = |m: usize| (m / 2 + 1) as u64;
         let operator = 8 * half(mx) * half(my) + 8 * n + 4 * half(px) * half(py);
         let scratch = 16 * ny as u64 * half(mx) + 8 * ny as u64 * half(px);
-        let iteration = 5 * 8 * n + 4 * n;
+        let iteration = 5 * 8 * n + 2 * 4 * n + n;
         operator + scratch + iteration + n
     }
 

@@ -1,8 +1,10 @@
 //! What a solve returns: the solution, its termination information, and how the iteration
 //! assembles them.
 
+use super::passes::{in_order, BLOCK};
 use super::{LevelInfo, NormalProblem, SOLVER_NAME};
 use crate::error::Result;
+use rayon::prelude::*;
 use std::time::Instant;
 use stickslip_lattice::{Boundary, ContactGrid, NormalOperator};
 use stickslip_quad::Tolerance;
@@ -201,21 +203,33 @@ impl NormalProblem<'_> {
         };
         let plastic_cells = plastic.iter().filter(|&&c| c).count();
         let area = self.hx * self.hy;
-        let contact: Vec<bool> = pressure.iter().map(|&p| p > 0.0).collect();
-        let contact_cells = contact.iter().filter(|&&c| c).count();
-        let touches_boundary = self.boundary == Boundary::Free
-            && contact.iter().enumerate().any(|(k, &c)| {
-                let (i, j) = (k % nx, k / nx);
-                c && (i == 0 || j == 0 || i + 1 == nx || j + 1 == ny)
-            });
+        // The contact flags, and per block the pressed cells, the pressure sum and peak, in
+        // one parallel pass (the sums in block order, the same for any number of threads).
+        let mut contact = vec![false; nx * ny];
+        let (contact_cells, sum, peak) = in_order(
+            contact.par_chunks_mut(BLOCK).zip(pressure.par_chunks(BLOCK)).map(|(c, p)| {
+                let mut acc = (0usize, 0.0, 0.0f64);
+                for (c, &p) in c.iter_mut().zip(p) {
+                    *c = p > 0.0;
+                    acc = (acc.0 + usize::from(*c), acc.1 + p, acc.2.max(p));
+                }
+                acc
+            }),
+        )
+        .into_iter()
+        .fold((0, 0.0, 0.0f64), |a, b| (a.0 + b.0, a.1 + b.1, a.2.max(b.2)));
+        let touches_boundary = self.boundary == Boundary::Free && {
+            let row = |j: usize| contact[j * nx..(j + 1) * nx].iter().any(|&c| c);
+            row(0) || row(ny - 1) || (0..ny).any(|j| contact[j * nx] || contact[j * nx + nx - 1])
+        };
         NormalSolution {
             nx,
             ny,
             hx: self.hx,
             hy: self.hy,
             origin: self.origin,
-            force: area * pressure.iter().sum::<f64>(),
-            peak_pressure: pressure.iter().copied().fold(0.0, f64::max),
+            force: area * sum,
+            peak_pressure: peak,
             contact_cells,
             area: area * contact_cells as f64,
             fraction: contact_cells as f64 / (nx * ny) as f64,
