@@ -579,6 +579,11 @@ impl<'a> NormalProblem<'a> {
     /// # Errors
     /// See [`NormalProblem::solve_with`].
     pub fn solve(&self, load: NormalLoad) -> Result<NormalSolution> {
+        // On rayon's pool: the solve's loops are then split without a hand-over each.
+        stickslip_lattice::on_pool(|| self.solve_here(load))
+    }
+
+    fn solve_here(&self, load: NormalLoad) -> Result<NormalSolution> {
         let (tol, force) = self.check_load(load)?;
         if let (Some(cap), NormalLoad::Approach(_)) = (self.hardness, load) {
             let op = self.operator();

@@ -436,6 +436,11 @@ impl<'a> FastProblem<'a> {
     /// full stick. If the coarse solve or the warm solve fails, the fine lattice is solved
     /// again from a cold start, so the nesting never turns a solvable problem into a failure.
     pub fn solve(&self) -> Result<FastSolution> {
+        // On rayon's pool: the solve's loops are then split without a hand-over each.
+        stickslip_lattice::on_pool(|| self.solve_here())
+    }
+
+    fn solve_here(&self) -> Result<FastSolution> {
         // The coarse levels first, so that their memory is released before this lattice's
         // operator is planned.
         let t1 = Instant::now();
