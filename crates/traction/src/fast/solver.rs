@@ -533,6 +533,16 @@ impl<'a> FastProblem<'a> {
         scratch: &mut ConvScratch,
         start: &WarmStart,
     ) -> Result<FastSolution> {
+        // On rayon's pool, as `solve`: load paths call this once a step.
+        stickslip_lattice::on_pool(|| self.solve_from_here(op, scratch, start))
+    }
+
+    fn solve_from_here(
+        &self,
+        op: &TensorConvolution,
+        scratch: &mut ConvScratch,
+        start: &WarmStart,
+    ) -> Result<FastSolution> {
         if start.traction.len() != self.grid.len() {
             return Err(Error::LengthMismatch {
                 name: "warm-start tractions",
