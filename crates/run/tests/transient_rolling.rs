@@ -82,8 +82,19 @@ fn after_two_contact_lengths_the_state_is_steady_rolling() {
         solve(&scene(48, &format!("creepage = {{ longitudinal = {xi:e} }}"), 0.0, "fast")).unwrap();
     let fx = steady.forces.fx.unwrap();
     let force_err = (fx - T).abs() / T;
+    let worst = traction_difference(&out, &steady);
+    println!("steady at xi = {xi:.6e}: Fx = {fx:.6} N ({force_err:.2e}); traction max diff {worst:.2e} f p0");
+    assert!(force_err < 2e-4, "steady creep force {fx} against the held {T}");
+    assert!(worst < 2e-3, "traction differs from the steady one by {worst:.3e} f p0");
+    let stick = out.zones.grid.as_ref().unwrap().stick_area_fraction;
+    let steady_stick = steady.zones.grid.as_ref().unwrap().stick_area_fraction;
+    assert!((stick - steady_stick).abs() < 0.01, "{stick} vs {steady_stick}");
+}
+
+/// The largest traction difference between two runs on the same lattice, over f p0.
+fn traction_difference(a: &Outcome, b: &Outcome) -> f64 {
     let (SurfaceOut::Grid { p, qx, qy, .. }, SurfaceOut::Grid { qx: sx, qy: sy, .. }) =
-        (&out.surface, &steady.surface)
+        (&a.surface, &b.surface)
     else {
         panic!("lattices")
     };
@@ -94,12 +105,7 @@ fn after_two_contact_lengths_the_state_is_steady_rolling() {
             worst = worst.max((qx[i][j] - sx[i][j]).hypot(qy[i][j] - sy[i][j]) / (F * p0));
         }
     }
-    println!("steady at xi = {xi:.6e}: Fx = {fx:.6} N ({force_err:.2e}); traction max diff {worst:.2e} f p0");
-    assert!(force_err < 2e-4, "steady creep force {fx} against the held {T}");
-    assert!(worst < 2e-3, "traction differs from the steady one by {worst:.3e} f p0");
-    let stick = out.zones.grid.as_ref().unwrap().stick_area_fraction;
-    let steady_stick = steady.zones.grid.as_ref().unwrap().stick_area_fraction;
-    assert!((stick - steady_stick).abs() < 0.01, "{stick} vs {steady_stick}");
+    worst
 }
 
 /// The dissipation of the last step per unit distance against -F xi.
@@ -175,18 +181,7 @@ fn prescribed_creepage_rolls_into_the_steady_creep_force() {
         solve(&scene(32, &format!("creepage = {{ longitudinal = {xi:e} }}"), 0.0, "fast")).unwrap();
     let fx = steady.forces.fx.unwrap();
     let force_err = (h.fx[last] - fx).abs() / (F * P);
-    let (SurfaceOut::Grid { p, qx, qy, .. }, SurfaceOut::Grid { qx: sx, qy: sy, .. }) =
-        (&out.surface, &steady.surface)
-    else {
-        panic!("lattices")
-    };
-    let p0 = p.iter().flatten().copied().fold(0.0, f64::max);
-    let mut worst = 0.0f64;
-    for i in 0..qx.len() {
-        for j in 0..qx[i].len() {
-            worst = worst.max((qx[i][j] - sx[i][j]).hypot(qy[i][j] - sy[i][j]) / (F * p0));
-        }
-    }
+    let worst = traction_difference(&out, &steady);
     let n_len = (last + 1) / 10;
     println!(
         "xi = {xi:e}: transient Fx = {:.6} N after {} steps, steady {fx:.6} N ({force_err:.2e} of fP); traction max diff {worst:.2e} f p0; Fx after 1, 2, 5 lengths {:.4}, {:.4}, {:.4} N",

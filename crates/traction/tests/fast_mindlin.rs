@@ -1,17 +1,11 @@
 //! The fast solver on the Cattaneo–Mindlin sphere (FORMULAS.md E) at issue 6's sizes.
 
 mod fast_common;
-use fast_common::{extended, steel, tol};
+use fast_common::{extended, hertz_radius, steel, tol};
 use std::time::Instant;
 use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Mindlin;
 use stickslip_traction::{ElementState, FastProblem, FastSolution, Load};
-
-/// Hertz radius of a sphere R on a flat, a = (3PR/(4E*))^(1/3) (FORMULAS.md E).
-fn hertz_radius(p: f64, r: f64) -> f64 {
-    let s = steel();
-    (3.0 * p * r * 2.0 * s.normal_compliance() / 4.0).cbrt()
-}
 
 struct Report {
     n: usize,

@@ -3,7 +3,7 @@
 //! traction of M–D, Mindlin & Deresiewicz's oblique loading (Johnson §7.6), gross slip.
 
 mod fast_common;
-use fast_common::steel;
+use fast_common::{centred_lattice, hertz_on_lattice, hertz_radius, steel};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 use stickslip_lattice::ContactGrid;
@@ -77,12 +77,6 @@ mod tol {
 /// Seed 002 Example 1 proportions: P = 2160 lbf, f = 0.1, R = 1 in, steel on steel.
 const P: f64 = 2160.0;
 const F: f64 = 0.1;
-
-/// Hertz radius of a steel sphere R on a steel flat, a = (3PR/(4E*))^(1/3) (FORMULAS.md E).
-fn hertz_radius(p: f64, r: f64) -> f64 {
-    let s = steel();
-    (3.0 * p * r * 2.0 * s.normal_compliance() / 4.0).cbrt()
-}
 
 /// Hertz's p0 = 3P/(2 pi a^2).
 fn p0(p: f64, a: f64) -> f64 {
@@ -368,25 +362,6 @@ fn masing_rule_on_a_rough_patch() {
     }
 }
 
-/// Hertz pressure of a steel sphere (R = 1) under P on a fixed lattice of `n` x `n` cells of
-/// side `h` centred at the origin (zero outside the contact; sampled at the cell centres and
-/// scaled so that the cell forces sum to P, as `ContactGrid::hertz_circle` does).
-fn hertz_on_lattice(p: f64, n: usize, h: f64) -> Vec<f64> {
-    let a = hertz_radius(p, 1.0);
-    let half = n as f64 / 2.0;
-    let mut pr = vec![0.0; n * n];
-    for j in 0..n {
-        for i in 0..n {
-            let x = (i as f64 + 0.5 - half) * h;
-            let y = (j as f64 + 0.5 - half) * h;
-            pr[j * n + i] = (1.0 - (x * x + y * y) / (a * a)).max(0.0).sqrt();
-        }
-    }
-    let sum: f64 = pr.iter().sum();
-    pr.iter_mut().for_each(|v| *v *= p / (sum * h * h));
-    pr
-}
-
 /// Issue 31, item 3 (Mindlin & Deresiewicz's oblique loading, Johnson §7.6): when T and P
 /// grow together from zero with T/P = kappa < f, nothing slips, the traction is
 /// q = kappa p everywhere and the shift is delta = 3 kappa P (2 - nu)/(8 G a) for two
@@ -407,17 +382,7 @@ fn oblique_proportional_loading_matches_johnson() {
     let normal: Vec<f64> = (1..=corners).map(|i| P * (i as f64 / corners as f64).powi(3)).collect();
     let tangential: Vec<f64> = normal.iter().map(|p| kappa * p).collect();
     let path = LoadPath::new(PathControl::Force, tangential, normal, 2).unwrap();
-    let half = n as f64 / 2.0;
-    let grid = ContactGrid::from_mask(
-        h,
-        h,
-        (-half * h, -half * h),
-        n,
-        n,
-        &vec![true; n * n],
-        &hertz_on_lattice(P, n, h),
-    )
-    .unwrap();
+    let grid = centred_lattice(n, h, &hertz_on_lattice(P, n, h));
     let out = HistoryProblem::new(&grid, [s, s], F)
         .unwrap()
         .run(&path, |p| Ok::<_, Error>(hertz_on_lattice(p, n, h)))
@@ -706,17 +671,7 @@ fn falling_and_rising_normal_load() {
     let n = 64;
     let a = hertz_radius(P, 1.0);
     let h = 2.0 * a / n as f64;
-    let half = n as f64 / 2.0;
-    let grid = ContactGrid::from_mask(
-        h,
-        h,
-        (-half * h, -half * h),
-        n,
-        n,
-        &vec![true; n * n],
-        &hertz_on_lattice(P, n, h),
-    )
-    .unwrap();
+    let grid = centred_lattice(n, h, &hertz_on_lattice(P, n, h));
     let t = 0.4 * F * P;
     let path = LoadPath::new(
         PathControl::Force,

@@ -20,7 +20,7 @@
 //! per step (as in the proportional-loading test in history.rs).
 
 mod fast_common;
-use fast_common::steel;
+use fast_common::{centred_lattice, hertz_on_lattice, hertz_radius, steel};
 use std::f64::consts::PI;
 use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Mindlin;
@@ -56,28 +56,6 @@ mod tol {
 const P: f64 = 2160.0;
 const F: f64 = 0.1;
 
-fn hertz_radius(p: f64) -> f64 {
-    (3.0 * p * 2.0 * steel().normal_compliance() / 4.0).cbrt()
-}
-
-/// Hertz pressure under `p` on a fixed lattice of n x n cells of side h (cell forces sum
-/// to p), zero outside the contact.
-fn hertz_on_lattice(p: f64, n: usize, h: f64) -> Vec<f64> {
-    let a = hertz_radius(p);
-    let half = n as f64 / 2.0;
-    let mut pr = vec![0.0; n * n];
-    for j in 0..n {
-        for i in 0..n {
-            let x = (i as f64 + 0.5 - half) * h;
-            let y = (j as f64 + 0.5 - half) * h;
-            pr[j * n + i] = (1.0 - (x * x + y * y) / (a * a)).max(0.0).sqrt();
-        }
-    }
-    let sum: f64 = pr.iter().sum();
-    pr.iter_mut().for_each(|v| *v *= p / (sum * h * h));
-    pr
-}
-
 /// A path from (P0 = P/2, T = 0) to (P, lambda (P - P0)), the contact radius growing one
 /// cell per corner, two steps between corners, on 96 x 96 cells over the final contact.
 struct Oblique {
@@ -93,10 +71,10 @@ const STEPS_BETWEEN: usize = 2;
 fn oblique(lambda: f64) -> Oblique {
     let s = steel();
     let n = 96;
-    let a1 = hertz_radius(P);
+    let a1 = hertz_radius(P, 1.0);
     let h = 2.0 * a1 / n as f64;
     let p_start = 0.5 * P;
-    let a0 = hertz_radius(p_start);
+    let a0 = hertz_radius(p_start, 1.0);
     let corners = ((a1 - a0) / h).ceil() as usize;
     let mut normal = vec![p_start];
     let mut tangential = vec![0.0];
@@ -108,17 +86,7 @@ fn oblique(lambda: f64) -> Oblique {
     }
     let path = LoadPath::new(PathControl::Force, tangential.clone(), normal.clone(), STEPS_BETWEEN)
         .unwrap();
-    let half = n as f64 / 2.0;
-    let grid = ContactGrid::from_mask(
-        h,
-        h,
-        (-half * h, -half * h),
-        n,
-        n,
-        &vec![true; n * n],
-        &hertz_on_lattice(P, n, h),
-    )
-    .unwrap();
+    let grid = centred_lattice(n, h, &hertz_on_lattice(P, n, h));
     let out = HistoryProblem::new(&grid, [s, s], F)
         .unwrap()
         .run(&path, |p| Ok::<_, Error>(hertz_on_lattice(p, n, h)))
@@ -142,7 +110,7 @@ fn traction_rms(o: &Oblique, want: impl Fn(f64) -> f64, scale: f64) -> f64 {
 #[test]
 fn oblique_loading_faster_than_friction_reaches_cattaneo() {
     let s = steel();
-    let a1 = hertz_radius(P);
+    let a1 = hertz_radius(P, 1.0);
     let lambda = 1.5 * F;
     let o = oblique(lambda);
     let (out, grid, h) = (&o.out, &o.grid, o.h);
@@ -156,7 +124,8 @@ fn oblique_loading_faster_than_friction_reaches_cattaneo() {
     for (i, (&pn, &t)) in normal.iter().zip(tangential.iter()).enumerate().skip(1) {
         let step = &out.steps[i * steps_between];
         assert!((step.normal - pn).abs() <= 1e-9 * P && (step.tangential - t).abs() <= 1e-9 * P);
-        let want = Mindlin::new(hertz_radius(pn), pn, F, t).unwrap().compliance_relative(&s, &s);
+        let want =
+            Mindlin::new(hertz_radius(pn, 1.0), pn, F, t).unwrap().compliance_relative(&s, &s);
         worst_shift = worst_shift.max((step.shift / want - 1.0).abs());
     }
 
@@ -199,11 +168,11 @@ fn oblique_loading_faster_than_friction_reaches_cattaneo() {
 #[test]
 fn oblique_loading_slower_than_friction_does_not_slip() {
     let s = steel();
-    let a1 = hertz_radius(P);
+    let a1 = hertz_radius(P, 1.0);
     let lambda = 0.5 * F;
     let o = oblique(lambda);
     let p_start = o.normal[0];
-    let a0 = hertz_radius(p_start);
+    let a0 = hertz_radius(p_start, 1.0);
     let t1 = *o.tangential.last().unwrap();
     let p0 = |p: f64, a: f64| 3.0 * p / (2.0 * PI * a * a);
     let hertz = |p: f64, a: f64, r: f64| {

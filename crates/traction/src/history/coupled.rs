@@ -345,10 +345,11 @@ fn continuation(
     ((0.0..=4.0).contains(&r) && off <= 1e-9 * n0.max(n1)).then_some(r)
 }
 
-/// The same for scalar fields.
-fn rel_change_scalar(a: &[f64], b: &[f64]) -> f64 {
+/// $\lVert\mathbf a - \mathbf b\rVert_2/\lVert\mathbf a\rVert_2$ over the (a, b) component
+/// pairs (0 when both are zero).
+fn rel_change_of(pairs: impl Iterator<Item = (f64, f64)>) -> f64 {
     let (mut d, mut s) = (0.0, 0.0);
-    for (x, y) in a.iter().zip(b) {
+    for (x, y) in pairs {
         d += (x - y).powi(2);
         s += x * x;
     }
@@ -361,18 +362,12 @@ fn rel_change_scalar(a: &[f64], b: &[f64]) -> f64 {
     }
 }
 
-/// $\lVert\mathbf a - \mathbf b\rVert_2/\lVert\mathbf a\rVert_2$ (0 when both are zero).
+/// The relative change of a scalar field.
+fn rel_change_scalar(a: &[f64], b: &[f64]) -> f64 {
+    rel_change_of(a.iter().copied().zip(b.iter().copied()))
+}
+
+/// The relative change of a traction field (both components).
 fn rel_change(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
-    let (mut d, mut s) = (0.0, 0.0);
-    for (x, y) in a.iter().zip(b) {
-        d += (x.0 - y.0).powi(2) + (x.1 - y.1).powi(2);
-        s += x.0 * x.0 + x.1 * x.1;
-    }
-    if s > 0.0 {
-        (d / s).sqrt()
-    } else if d > 0.0 {
-        f64::INFINITY
-    } else {
-        0.0
-    }
+    rel_change_of(a.iter().zip(b).flat_map(|(x, y)| [(x.0, y.0), (x.1, y.1)]))
 }

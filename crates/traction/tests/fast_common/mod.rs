@@ -34,3 +34,43 @@ pub fn steel() -> Material {
 pub fn extended() -> bool {
     std::env::var("STICKSLIP_EXTENDED").is_ok_and(|v| v == "1")
 }
+
+/// Hertz radius of a steel sphere R on a steel flat, a = (3PR/(4E*))^(1/3) (FORMULAS.md E).
+pub fn hertz_radius(p: f64, r: f64) -> f64 {
+    (3.0 * p * r * 2.0 * steel().normal_compliance() / 4.0).cbrt()
+}
+
+/// Hertz pressure of a steel sphere (R = 1) under `p` on a fixed lattice of `n` x `n` cells
+/// of side `h` centred at the origin (zero outside the contact; sampled at the cell centres
+/// and scaled so that the cell forces sum to `p`, as `ContactGrid::hertz_circle` does).
+pub fn hertz_on_lattice(p: f64, n: usize, h: f64) -> Vec<f64> {
+    let a = hertz_radius(p, 1.0);
+    let half = n as f64 / 2.0;
+    let mut pr = vec![0.0; n * n];
+    for j in 0..n {
+        for i in 0..n {
+            let x = (i as f64 + 0.5 - half) * h;
+            let y = (j as f64 + 0.5 - half) * h;
+            pr[j * n + i] = (1.0 - (x * x + y * y) / (a * a)).max(0.0).sqrt();
+        }
+    }
+    let sum: f64 = pr.iter().sum();
+    pr.iter_mut().for_each(|v| *v *= p / (sum * h * h));
+    pr
+}
+
+/// The whole `n` x `n` lattice of cells of side `h` centred at the origin, every cell an
+/// element, with the pressure `pressure` (row by row).
+pub fn centred_lattice(n: usize, h: f64, pressure: &[f64]) -> stickslip_lattice::ContactGrid {
+    let half = n as f64 / 2.0;
+    stickslip_lattice::ContactGrid::from_mask(
+        h,
+        h,
+        (-half * h, -half * h),
+        n,
+        n,
+        &vec![true; n * n],
+        pressure,
+    )
+    .unwrap()
+}
