@@ -204,8 +204,10 @@ impl TransientRolling {
                 return Err(Error::OutOfDomain { name, value: v, allowed: "finite" });
             }
         }
-        let sol = stickslip_lattice::on_pool(|| self.trial(force, spin))?;
-        Ok(self.commit(&sol, spin.is_some(), self.grid.hx))
+        stickslip_lattice::on_pool(|| {
+            let sol = self.trial(force, spin)?;
+            Ok(self.commit(&sol, spin.is_some(), self.grid.hx))
+        })
     }
 
     /// Roll one element length $h_x$ at the prescribed creepages $(\xi, \eta)$ and spin $\phi$
@@ -219,11 +221,12 @@ impl TransientRolling {
     /// $10^{-3}\,f\bar p\,(1/G_1 + 1/G_2)$ ($\bar p$ the mean pressure).
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] for non-finite creepages or spin, or for creepages that drive
-    /// the contact into full sliding (the creep force would reach $f\sum_kP_k$: the force
-    /// cannot be prescribed there); [`Error::NotConverged`] after 40 trials; the fast
-    /// solver's errors as in [`TransientRolling::roll`]. After an error the state is that of
-    /// the last solved step.
+    /// [`Error::OutOfDomain`] for non-finite creepages or spin, or for creepages whose creep
+    /// force would come within $10^{-9}$ of the capacity $f\sum_kP_k$ (a force-controlled
+    /// step cannot be solved at the capacity itself; full sliding just below it is solved);
+    /// [`Error::NotConverged`] when 40 trials do not meet the creepages or the secant's
+    /// estimate becomes singular; the fast solver's errors as in [`TransientRolling::roll`].
+    /// After an error the state is that of the last solved step.
     pub fn roll_at_creepage(&mut self, creepage: (f64, f64), spin: f64) -> Result<TransientStep> {
         stickslip_lattice::on_pool(|| self.roll_at_creepage_here(creepage, spin))
     }
@@ -268,6 +271,7 @@ impl TransientRolling {
             self.bodies.iter().filter(|b| !b.is_rigid()).map(|b| 1.0 / b.shear_modulus()).sum();
         let scale = h * self.friction * mean_p * compliance;
         let tol = 1e-9 * target.0.hypot(target.1).max(1e-3 * scale);
+        let mut trials = 0;
         for _ in 0..40 {
             if r.0.hypot(r.1) <= tol {
                 self.jacobian = Some(j);
@@ -285,7 +289,7 @@ impl TransientRolling {
                 let room = cap - force.0.hypot(force.1);
                 if room <= 1e-9 * cap {
                     return Err(Error::OutOfDomain {
-                        name: "creepage (the creep force would reach f P: full sliding)",
+                        name: "creepage (its creep force would reach the capacity f P)",
                         value: creepage.0.hypot(creepage.1),
                         allowed: "creepages that leave part of the contact sticking",
                     });
@@ -294,6 +298,7 @@ impl TransientRolling {
                 df = (df.0 * t, df.1 * t);
             }
             force = (force.0 + df.0, force.1 + df.1);
+            trials += 1;
             let s2 = self.trial(force, Some(spin))?;
             let r2 = (s2.shift.0 - target.0, s2.shift.1 - target.1);
             // Broyden's update: J += (dr - J df) df^T / |df|^2.
@@ -311,7 +316,7 @@ impl TransientRolling {
         }
         Err(Error::NotConverged {
             solver: "transient rolling at prescribed creepages (secant on the creep force)",
-            iterations: 40,
+            iterations: trials,
             residual: r.0.hypot(r.1) / target.0.hypot(target.1).max(1e-3 * scale),
             tolerance: 1e-9,
         })
