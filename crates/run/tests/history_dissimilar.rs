@@ -123,21 +123,26 @@ fn identical_bodies_stay_uncoupled() {
     assert!(json["history"].get("coupling_passes").is_none());
 }
 
-#[test]
-fn surface_path_runs_coupled() {
-    // The same sphere as a surface (contact radius about 0.21 mm under 100 N).
-    let (plan, out) = solve(&scene(
-        "kind = \"surface\"\nsize = [\"0.6 mm\", \"0.6 mm\"]\ncells = [40, 40]\n[geometry.profile]\nshape = \"sphere\"\nradius = \"10 mm\"",
-        "model = \"rigid\"",
-        32,
-    ));
+/// A rigid sphere (R = 10 mm) given as a surface of `cells` across `size` (free or periodic)
+/// runs its path coupled: every step takes at least two passes and the traction settles.
+fn surface_path_runs_coupled_on(geometry: &str) -> Outcome {
+    let (plan, out) = solve(&scene(geometry, "model = \"rigid\"", 32));
     assert!(reason(&plan).contains("coupled with the normal contact through Dundurs beta = 0.2857"));
     check_columns(&out);
     let h = out.history.as_ref().unwrap();
     assert!(h.coupling_passes.iter().all(|&p| p >= 2), "{:?}", h.coupling_passes);
-    let c = out.solver.coupling.expect("solver.coupling");
-    assert!(c.traction_change <= 1e-9, "{c:?}");
+    assert!(out.solver.coupling.expect("solver.coupling").traction_change <= 1e-9);
+    out
+}
+
+#[test]
+fn surface_path_runs_coupled() {
+    // The same sphere as a surface (contact radius about 0.21 mm under 100 N).
+    let out = surface_path_runs_coupled_on(
+        "kind = \"surface\"\nsize = [\"0.6 mm\", \"0.6 mm\"]\ncells = [40, 40]\n[geometry.profile]\nshape = \"sphere\"\nradius = \"10 mm\"",
+    );
     // The surface's normal solves: one per pass and one per corner check.
+    let c = out.solver.coupling.expect("solver.coupling");
     let normal = out.solver.normal.expect("solver.normal");
     assert!(normal.steps >= c.passes, "{} solves for {} passes", normal.steps, c.passes);
 }
@@ -146,14 +151,7 @@ fn surface_path_runs_coupled() {
 fn periodic_surface_path_runs_coupled() {
     // The sphere on one period of 0.8 mm (about two contact diameters), the periodic cross
     // operators.
-    let (plan, out) = solve(&scene(
+    surface_path_runs_coupled_on(
         "kind = \"surface\"\nboundary = \"periodic\"\nsize = [\"0.8 mm\", \"0.8 mm\"]\ncells = [48, 48]\n[geometry.profile]\nshape = \"sphere\"\nradius = \"10 mm\"",
-        "model = \"rigid\"",
-        32,
-    ));
-    assert!(reason(&plan).contains("coupled with the normal contact through Dundurs beta = 0.2857"));
-    check_columns(&out);
-    let h = out.history.as_ref().unwrap();
-    assert!(h.coupling_passes.iter().all(|&p| p >= 2), "{:?}", h.coupling_passes);
-    assert!(out.solver.coupling.expect("solver.coupling").traction_change <= 1e-9);
+    );
 }

@@ -216,7 +216,9 @@ impl TransientRolling {
     /// (the step is the force-controlled one of [`TransientRolling::roll`], whose rigid shift
     /// grows monotonically with the force). The first creepage-controlled step estimates
     /// d(shift)/d(force) by two extra solves; later steps start from the last step's force
-    /// and estimate, so near the steady state a step costs one or two solves. The iteration
+    /// and estimate (measured over the tests' 679 rolling steps: 2 solves in most, 2.6 on
+    /// average, at most 7 after the first, whose secant took 4 to 20 besides the estimate's
+    /// two; `crates/rolling/tests/transient_creepage.rs`). The iteration
     /// stops when the creepages are met to $10^{-9}$ of the larger of $|(\xi, \eta)|$ and
     /// $10^{-3}\,f\bar p\,(1/G_1 + 1/G_2)$ ($\bar p$ the mean pressure).
     ///
