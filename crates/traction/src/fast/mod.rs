@@ -48,18 +48,19 @@
 //! like $|\mathbf k|$ where $K$ decays like $1/|\mathbf k|$. It is applied by one unpadded
 //! periodic FFT on the lattice's bounding box (a quarter of a padded product) with the
 //! discrete wave number $2\sin(kh/2)/h$, scaled to the Jacobi diagonal. Slip tangents take
-//! part in the same transform, each weighted by $w_d = \sqrt{K_{tt}(0)/(K_{tt}(0) + D_d)}$,
-//! plus a quarter of the weighted Jacobi value, $\tfrac14(1 - w_d^2)/(K_{tt}(0) + D_d)$: a slip
-//! cell next to the stick zone (slip still small, $D_d \ll K_{tt}(0)$) is coupled to its
-//! neighbours as a stick component is, a cell far out in the slip zone ($D_d \gg K_{tt}(0)$)
-//! falls back to its diagonal (the quarter was measured best, see `SLIP_JACOBI` in
+//! part in the same transform, each weighted by $w_d = (1 + (D_d/K_{tt}(0))^2)^{-1/2}$, plus
+//! a quarter of the weighted Jacobi value, $\tfrac14(1 - w_d^2)/(K_{tt}(0) + D_d)$: a slip cell
+//! next to the stick zone (slip still small, $D_d \ll K_{tt}(0)$) is coupled to its neighbours
+//! as a stick component is, a cell far out in the slip zone ($D_d \gg K_{tt}(0)$) falls back
+//! to its diagonal (the form and the quarter were measured best, see `SLIP_JACOBI` in
 //! `newton/pcg.rs`). The restriction of an inverse is not the inverse of the restriction, so
 //! the preconditioned system is not the identity near the stick boundary, but the spread of
 //! its spectrum no longer grows like the lattice size. Measured on the Cattaneo sphere
-//! (T = 0.5 fP, residual $10^{-8}$, nested start, `fast_probe N`): 17, 19, 21 and 27 CG steps
-//! at 128, 256, 512 and 1024 cells across, where Jacobi on the slip tangents took 34, 41, 53
-//! and 75. From a cold start (no nesting, `fast_probe N 0.5 cold`) 37 and 45 at 128 and 256
-//! across; Jacobi throughout took 128 and 210 there.
+//! (T = 0.5 fP, residual $10^{-8}$, nested start, `fast_probe N`): 22, 21, 23 and 31 CG steps
+//! at 128 (T = 0.3 fP), 256, 512 and 1024 cells across, where Jacobi on the slip tangents took
+//! 32, 41, 53 and 75; near gross slip (T = 0.99999 fP) 11 at 512 across (Jacobi 12). From a
+//! cold start (no nesting, `fast_probe N 0.5 cold`) 42 and 49 at 128 and 256 across, where
+//! Jacobi throughout took 128 and 210.
 //! Inner tolerances follow Eisenstat & Walker (1996): loose while the active set still
 //! moves, then no tighter than needed to bring the residual below the target.
 //!

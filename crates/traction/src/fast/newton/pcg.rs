@@ -181,7 +181,7 @@ impl Solver<'_, '_> {
             .collect();
         let k0 = self.k0;
         // Jacobi values 1/(K_dd(0) + D_d) and the preconditioner's weights
-        // w_d = sqrt(K_dd(0) / (K_dd(0) + D_d)) (1 on stick components).
+        // w_d = 1 / sqrt(1 + (D_d / K_dd(0))^2) (1 on stick components).
         let (minv, wt): (Vec<f64>, Vec<f64>) = dofs
             .par_iter()
             .zip(diag_d.par_iter())
@@ -189,7 +189,8 @@ impl Solver<'_, '_> {
                 let kd = d.e.0 * (k0[0] * d.e.0 + k0[1] * d.e.1)
                     + d.e.1 * (k0[1] * d.e.0 + k0[2] * d.e.1);
                 let m = 1.0 / (kd + dd);
-                (m, if d.stick { 1.0 } else { (kd * m).sqrt() })
+                let x = dd / kd;
+                (m, if d.stick { 1.0 } else { (1.0 + x * x).sqrt().recip() })
             })
             .unzip();
         // G^-1 b_j and W = B G^-1 B^T.
@@ -354,21 +355,36 @@ impl Solver<'_, '_> {
 }
 
 /// The weight $c$ of the Jacobi term on the slip tangents in the preconditioner
-/// $G^{-1} = W P^{\mathsf T} M P W + c\,(I - W^2)\,J$.
+/// $G^{-1} = W P^{\mathsf T} M P W + c\,(I - W^2)\,J$, with
+/// $w_d = (1 + (D_d/K_{tt}(0))^2)^{-1/2}$ on a slip tangent and 1 on a stick component.
 ///
 /// A slip tangent's row of the Newton matrix is $K_{tt}(0) + D_d$ on the diagonal plus the
-/// elastic coupling to every other component. With $w_d^2 = K_{tt}(0)/(K_{tt}(0) + D_d)$
-/// the Fourier term alone already has the right diagonal, $w_d^2 M_{dd} = 1/(K_{tt}(0) +
-/// D_d)$, and it carries the coupling of slip cells near the stick zone (small $D_d$) as on
-/// the stick block; far out in the slip zone ($D_d \gg K_{tt}(0)$) the coupling fades with
-/// $w_d$ and the matrix is nearly diagonal. $M$ grows like $|\mathbf k|$, so it answers a
-/// smooth residual on the slip cells with almost nothing: the Jacobi term supplies that
-/// smooth part. Its weight was chosen by measurement (CG steps of the Cattaneo sphere,
-/// T = 0.5 fP, 512 cells across, residual $10^{-8}$, `fast_probe 512`): 33, 27, 24, 22,
-/// 21, 24, 26, 30 and 40 for $c$ = 0.05, 0.1, 0.15, 0.2, 0.25, 0.35, 0.5, 0.7 and 1; the
-/// old preconditioner (Fourier on the stick block, plain Jacobi on the slip tangents, no
-/// coupling) took 53. The count stays near 20 from 128 to 1024 cells across and from
-/// T = 0.1 fP to 0.99 fP.
+/// elastic coupling to every other component. A slip cell next to the stick zone (slip still
+/// small, $D_d \ll K_{tt}(0)$) is coupled to its neighbours as a stick component is, and takes
+/// the Fourier inverse ($w_d \approx 1$); far out in the slip zone ($D_d \gg K_{tt}(0)$) its
+/// row is nearly diagonal and it takes the Jacobi term ($w_d \approx K_{tt}(0)/D_d$, the
+/// Fourier part fading as its square). $M$ grows like $|\mathbf k|$, so it answers a smooth
+/// residual with almost nothing: between the two regimes the Jacobi term supplies that smooth
+/// part.
+///
+/// The form of the weight and $c$ were chosen by measurement, CG steps of the Cattaneo sphere
+/// at residual $10^{-8}$ (`fast_probe N ratio`, nested start; the 256 and 512 across rows at
+/// T/fP = 0.5, 0.9, 0.9999 and 0.99999):
+///
+/// | preconditioner on the slip tangents | 512 across | 256 across | 1024, 0.5 |
+/// |---|---|---|---|
+/// | Jacobi alone (before) | 53, 56, 14, 12 | 41, 45, 25, 23 | 75 |
+/// | $w^2 = K/(K + D)$, $c = 1/4$ | 21, 21, 36, 53 | 19, 18, 49, 71 | 27 |
+/// | $w^2 = K/(K + 4D)$, $c = 0.35$ | 25, 28, 10, 21 | 22, 23, 22, 34 | 36 |
+/// | $w^2 = 1/(1 + (D/K)^2)$, $c = 1/4$ (this) | 23, 25, 12, 11 | 21, 20, 22, 21 | 31 |
+/// | the same, $c = 0.35$ | 26, 27, 12, 11 | 20, 22, 22, 20 | 34 |
+/// | the same, $c = 0.2$ | 26, 25, 12, 11 | 23, —, 24, 20 | — |
+///
+/// The first weight couples too many cells near gross slip (almost every cell slips, many
+/// with $D_d$ near $K_{tt}(0)$), where Jacobi alone is already good; the sharper one keeps
+/// the gain at moderate loads and is never worse than Jacobi alone. Other rows with this
+/// choice: 24 at 256 across and T/fP = 0.1, 22 at 128 across and 0.3, 33 at 64 across and
+/// 0.5 (Jacobi alone: 32 and 39 for the last two).
 const SLIP_JACOBI: f64 = 0.25;
 
 /// Block length of the deterministic reductions: the sums of the CG iteration are taken in
