@@ -43,6 +43,12 @@ impl From<TractionError> for Fail {
     }
 }
 
+/// Relative margin within which two cells' Ruiz values count as the same peak: above the
+/// solvers' tolerances (the traction and slip it is made of are converged to 1e-8 and finer,
+/// so mirror cells of a symmetric contact differ by about that), far below what a Ruiz peak
+/// is read to.
+const RUIZ_TIE: f64 = 1e-6;
+
 /// The semi-axes of a Hertz contact under a normal load.
 type SemiAxes<'a> = Box<dyn Fn(f64) -> Result<(f64, f64), SceneError> + 'a>;
 
@@ -470,13 +476,20 @@ pub(crate) fn run(
     let mut ruiz_max = None;
     if let Some(v) = &ruiz_values {
         let mut map = vec![vec![0.0; ny]; nx];
-        let mut best = RuizMaxOut { value: 0.0, x: 0.0, y: 0.0 };
+        let mut on_lattice = Vec::with_capacity(v.len());
         for (k, &f2) in v.iter().enumerate() {
             let Some((i, j)) = lat.index(st.grid.x[k], st.grid.y[k]) else { continue };
             map[i][j] = f2;
-            if f2 > best.value {
-                best = RuizMaxOut { value: f2, x: st.grid.x[k], y: st.grid.y[k] };
-            }
+            on_lattice.push(k);
+        }
+        // The largest value, and the first cell (in the lattice's order) within RUIZ_TIE of
+        // it: on a symmetric contact the peak sits on mirror cells whose values differ only
+        // by rounding, and the cell reported must not flip between them from run to run.
+        let top = on_lattice.iter().map(|&k| v[k]).fold(0.0, f64::max);
+        let mut best = RuizMaxOut { value: top, x: 0.0, y: 0.0 };
+        if let Some(&k) = on_lattice.iter().find(|&&k| top > 0.0 && v[k] >= top * (1.0 - RUIZ_TIE))
+        {
+            (best.x, best.y) = (st.grid.x[k], st.grid.y[k]);
         }
         lat.ruiz = Some(map);
         ruiz_max = Some(best);
