@@ -74,8 +74,9 @@
 //!
 //! Every product with $K$ is one FFT convolution, $O(N\log N)$: one for the direction,
 //! $K\mathbf t$, and $u = Kp$ updated from it ($u \leftarrow u - \tau K\mathbf t$ plus the
-//! columns of the few cells clipped or re-entered, added directly when at most 16, else a
-//! full product of the new $p$), with a full product every 50 iterations and before the stop.
+//! columns of the few cells clipped or re-entered, added directly when at most 24 on a
+//! periodic lattice and about four times as many on a free one, else a full product of the
+//! new $p$), with a full product every 50 iterations and before the stop.
 //! The preconditioner is one more FFT pair, unpadded and in single precision (a quarter to
 //! a half of a product). The passes over the lattice that the iteration needs ride along
 //! with the transforms' own row passes where they can ([`NormalOperator::apply_rows`]): the
