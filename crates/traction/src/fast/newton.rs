@@ -15,7 +15,23 @@ use stickslip_lattice::{ConvScratch, TensorConvolution};
 
 mod pcg;
 
-use pcg::small_spd_solve;
+use pcg::{small_spd_solve, Reducer, Work, REDUCE_CHUNK};
+
+/// $\sqrt{a^2 + b^2}$ without `hypot`'s cost where the squares are safe. The solver's
+/// vectors are tractions (bounded by the capacities $fp_k$) and trial tractions
+/// $\mathbf q + \rho\,\mathbf s$ (a displacement times a stiffness): in Pa, far from
+/// $10^{\pm 154}$, where squaring would overflow or lose precision to subnormals. A sum of
+/// squares outside the normal range (zero, subnormal, infinite or NaN) goes to `hypot`
+/// itself, so the result is `hypot`'s to rounding (within an ulp or two) for every input.
+#[inline]
+fn norm(a: f64, b: f64) -> f64 {
+    let s = a * a + b * b;
+    if s.is_normal() {
+        s.sqrt()
+    } else {
+        a.hypot(b)
+    }
+}
 /// A rigid-body mode evaluated at a point.
 #[derive(Debug, Clone, Copy)]
 enum Mode {
@@ -38,7 +54,7 @@ impl Mode {
 }
 
 /// One free component of the Newton system: element and unit vector.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 struct Dof {
     /// Element index (32 bits: the dof list is streamed several times per CG step, and a
     /// 24-byte dof moves a quarter less memory than a 32-byte one).
@@ -215,23 +231,35 @@ impl<'p, 'a> Solver<'p, 'a> {
     }
 
     /// Relative complementarity residual and relative load residual of a state.
-    fn residuals(&self, qx: &[f64], qy: &[f64], ux: &[f64], uy: &[f64], mv: &[f64]) -> (f64, f64) {
-        let mut rr = 0.0;
-        let mut qq = 0.0;
-        for k in 0..self.n {
-            let w = self.rigid(mv, k);
-            let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
-            let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
-            let zr = z.0.hypot(z.1);
-            let pz = if zr > self.cap[k] {
-                let f = self.cap[k] / zr;
-                (z.0 * f, z.1 * f)
-            } else {
-                z
-            };
-            rr += (qx[k] - pz.0).powi(2) + (qy[k] - pz.1).powi(2);
-            qq += qx[k] * qx[k] + qy[k] * qy[k];
-        }
+    /// Summed in the fixed blocks of [`Reducer`] (in parallel), so the value does not depend
+    /// on the number of threads.
+    fn residuals(
+        &self,
+        red: &mut Reducer,
+        qx: &[f64],
+        qy: &[f64],
+        ux: &[f64],
+        uy: &[f64],
+        mv: &[f64],
+    ) -> (f64, f64) {
+        let [rr, qq, _] = red.reduce(self.n, |range| {
+            let (mut rr, mut qq) = (0.0, 0.0);
+            for k in range {
+                let w = self.rigid(mv, k);
+                let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+                let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
+                let zr = norm(z.0, z.1);
+                let pz = if zr > self.cap[k] {
+                    let f = self.cap[k] / zr;
+                    (z.0 * f, z.1 * f)
+                } else {
+                    z
+                };
+                rr += (qx[k] - pz.0).powi(2) + (qy[k] - pz.1).powi(2);
+                qq += qx[k] * qx[k] + qy[k] * qy[k];
+            }
+            [rr, qq, 0.0]
+        });
         let res = if qq > 0.0 { (rr / qq).sqrt() } else { rr.sqrt() };
         (res, self.load_residual(qx, qy))
     }
@@ -243,42 +271,60 @@ impl<'p, 'a> Solver<'p, 'a> {
     /// measured against. Continuous at zero load: a load of 1e-14 N on locked-in tractions
     /// of 480 N is held to the same absolute accuracy as a load of exactly zero.
     fn load_residual(&self, qx: &[f64], qy: &[f64]) -> f64 {
-        let lnorm = self.loads.iter().map(|l| l * l).sum::<f64>().sqrt();
         let (got, scale) = self.load_values(qx, qy);
+        self.load_error(&got, scale)
+    }
+
+    /// [`Solver::load_residual`] from the load values and their scale
+    /// ([`Solver::load_values`]).
+    fn load_error(&self, got: &[f64], scale: f64) -> f64 {
+        let lnorm = self.loads.iter().map(|l| l * l).sum::<f64>().sqrt();
         let err = got.iter().zip(&self.loads).map(|(a, b)| (a - b).powi(2)).sum::<f64>().sqrt();
         err / lnorm.max(scale).max(f64::MIN_POSITIVE)
     }
 
     /// $h_xh_y\sum_k\mathbf m_j\cdot\mathbf q_k$ per mode, and a magnitude scale.
+    /// Summed in fixed blocks of [`REDUCE_CHUNK`] elements (in parallel), the block sums
+    /// added in order.
     fn load_values(&self, qx: &[f64], qy: &[f64]) -> (Vec<f64>, f64) {
         let g = self.p.grid;
-        let mut out = vec![0.0; self.modes.len()];
-        let mut scale = 0.0;
-        for k in 0..self.n {
-            for (o, m) in out.iter_mut().zip(&self.modes) {
-                let v = m.at(g.x[k], g.y[k]);
-                let t = self.area * (v.0 * qx[k] + v.1 * qy[k]);
-                *o += t;
-                scale += t.abs();
-            }
-        }
-        (out, scale)
+        let nm = self.modes.len();
+        let parts: Vec<[f64; 4]> = (0..self.n.div_ceil(REDUCE_CHUNK))
+            .into_par_iter()
+            .map(|b| {
+                let mut acc = [0.0; 4];
+                for k in b * REDUCE_CHUNK..((b + 1) * REDUCE_CHUNK).min(self.n) {
+                    for (j, m) in self.modes.iter().enumerate() {
+                        let v = m.at(g.x[k], g.y[k]);
+                        let t = self.area * (v.0 * qx[k] + v.1 * qy[k]);
+                        acc[j] += t;
+                        acc[3] += t.abs();
+                    }
+                }
+                acc
+            })
+            .collect();
+        let total = parts
+            .iter()
+            .fold([0.0; 4], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]);
+        (total[..nm].to_vec(), total[3])
     }
 
     /// Element tractions projected on the admitted directions and clamped to the discs.
     fn admissible(&self, t: &[(f64, f64)]) -> (Vec<f64>, Vec<f64>) {
-        let mut qx = vec![0.0; self.n];
-        let mut qy = vec![0.0; self.n];
-        for k in 0..self.n {
-            let (a, b) = self.proj(k, t[k]);
-            let r = a.hypot(b);
-            let f = if r > self.cap[k] { self.cap[k] / r } else { 1.0 };
-            if r.is_finite() {
-                qx[k] = a * f;
-                qy[k] = b * f;
-            }
-        }
-        (qx, qy)
+        (0..self.n)
+            .into_par_iter()
+            .map(|k| {
+                let (a, b) = self.proj(k, t[k]);
+                let r = norm(a, b);
+                let f = if r > self.cap[k] { self.cap[k] / r } else { 1.0 };
+                if r.is_finite() {
+                    (a * f, b * f)
+                } else {
+                    (0.0, 0.0)
+                }
+            })
+            .unzip()
     }
 
     /// Mode coefficients of a rigid shift and rotation (the inverse of
@@ -328,35 +374,26 @@ impl<'p, 'a> Solver<'p, 'a> {
         // The traction change of the classification's projection (after the first step).
         let mut dqx = vec![0.0; n];
         let mut dqy = vec![0.0; n];
+        // The Newton system's and the PCG's buffers, reused from step to step.
+        let mut work = Work::default();
+        let mut red = Reducer::new(n);
         loop {
             // Whether no element changed between stick and slip in this classification.
             let mut settled = !first;
-            // Classification and projection of the slip elements.
+            // Classification and projection of the slip elements; `moved`: some traction
+            // changed in the projection.
+            let mut moved = false;
             if !first {
-                for k in 0..n {
-                    let w = self.rigid(&mv, k);
-                    let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
-                    let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
-                    let zr = z.0.hypot(z.1);
-                    let old = (qx[k], qy[k]);
-                    let was_stick = stick[k];
-                    if self.cap[k] == 0.0 {
-                        stick[k] = false;
-                        qx[k] = 0.0;
-                        qy[k] = 0.0;
-                    } else if zr <= self.cap[k] {
-                        stick[k] = true;
-                    } else {
-                        stick[k] = false;
-                        let nk = (z.0 / zr, z.1 / zr);
-                        nvec[k] = nk;
-                        qx[k] = self.cap[k] * nk.0;
-                        qy[k] = self.cap[k] * nk.1;
-                    }
-                    dqx[k] = qx[k] - old.0;
-                    dqy[k] = qy[k] - old.1;
-                    settled &= stick[k] == was_stick;
-                }
+                let (same, m) = self.classify(
+                    &mv,
+                    (&ux, &uy),
+                    (&mut qx, &mut qy),
+                    &mut stick,
+                    &mut nvec,
+                    (&mut dqx, &mut dqy),
+                );
+                settled &= same;
+                moved = m;
             } else if let Some(w) = start {
                 // Warm start: the start's stick/slip state is the first active set, each slip
                 // element at its capacity along the start's traction. The first Newton step
@@ -399,42 +436,17 @@ impl<'p, 'a> Solver<'p, 'a> {
                 self.state_product(&qx, &qy, &mut ux, &mut uy);
             }
             // Newton system.
-            let mut dofs: Vec<Dof> = Vec::with_capacity(2 * n);
-            let mut diag_d: Vec<f64> = Vec::with_capacity(2 * n);
-            let mut rhs: Vec<f64> = Vec::with_capacity(2 * n);
-            for k in 0..n {
-                let w = self.rigid(&mv, k);
-                let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
-                let st = stick[k];
-                let mut push = |e: (f64, f64), d: f64| {
-                    dofs.push(Dof { k: k as u32, e, stick: st });
-                    diag_d.push(d);
-                    rhs.push(e.0 * s.0 + e.1 * s.1);
-                };
-                match (&self.dirs, stick[k]) {
-                    (None, true) => {
-                        push((1.0, 0.0), 0.0);
-                        push((0.0, 1.0), 0.0);
-                    }
-                    (Some(d), true) => push(d[k], 0.0),
-                    (None, false) if self.cap[k] > 0.0 => {
-                        let nk = nvec[k];
-                        let ns = (nk.0 * s.0 + nk.1 * s.1).max(0.0);
-                        push((-nk.1, nk.0), ns / self.cap[k]);
-                    }
-                    _ => {}
-                }
-            }
-            let (have, _) = self.load_values(&qx, &qy);
+            self.system(&mut work, &stick, &nvec, &mv, (&ux, &uy));
+            let (have, scale) = self.load_values(&qx, &qy);
             // Once the load is met far inside the tolerance (after the first step of an
             // increment), the step keeps it (b = 0) and the PCG saves the product of its
             // load-correcting start.
-            let b: Vec<f64> = if incremental && !first && self.load_residual(&qx, &qy) <= 1e-3 * tol
-            {
-                vec![0.0; self.loads.len()]
-            } else {
-                self.loads.iter().zip(&have).map(|(l, h)| (l - h) / self.area).collect()
-            };
+            let b: Vec<f64> =
+                if incremental && !first && self.load_error(&have, scale) <= 1e-3 * tol {
+                    vec![0.0; self.loads.len()]
+                } else {
+                    self.loads.iter().zip(&have).map(|(l, h)| (l - h) / self.area).collect()
+                };
             // Inner (CG) tolerance, relative to the projected residual's start, in the manner
             // of Eisenstat and Walker: the outer residual itself while that is large (the
             // forcing term of Dembo, Eisenstat & Steihaug that keeps Newton's convergence
@@ -447,10 +459,10 @@ impl<'p, 'a> Solver<'p, 'a> {
             // whenever the residual failed to decrease (inexact steps can make the active set
             // wander).
             let eta = res.max(0.3 * tol / res).clamp(1e-6, 1e-2) * tighten;
-            let qnorm = qx.iter().chain(&qy).map(|v| v * v).sum::<f64>().sqrt();
+            let qnorm = red.sum(n, |r| r.map(|k| qx[k] * qx[k] + qy[k] * qy[k]).sum()).sqrt();
             let abs_floor = 0.05 * tol * qnorm;
-            let (x, dm, its) = self
-                .pcg(&dofs, &diag_d, &rhs, &b, settled.then_some((&dqx, &dqy)), eta, abs_floor)
+            let (dm, its) = self
+                .pcg(&mut work, &b, (settled && moved).then_some((&dqx, &dqy)), eta, abs_floor)
                 .map_err(|e| match e {
                     Error::NoStickLeft { solver, load, free_components, .. } => {
                         Error::NoStickLeft {
@@ -463,10 +475,13 @@ impl<'p, 'a> Solver<'p, 'a> {
                     e => e,
                 })?;
             cg_total += its;
-            for (d, xv) in dofs.iter().zip(&x) {
-                qx[d.k as usize] += xv * d.e.0;
-                qy[d.k as usize] += xv * d.e.1;
-            }
+            let (dofs, dof_first, x) = (&work.dofs, &work.first, &work.x);
+            qx.par_iter_mut().zip(qy.par_iter_mut()).enumerate().for_each(|(k, (a, b))| {
+                for i in dof_first[k]..dof_first[k + 1] {
+                    *a += x[i] * dofs[i].e.0;
+                    *b += x[i] * dofs[i].e.1;
+                }
+            });
             for (m, d) in mv.iter_mut().zip(&dm) {
                 *m += d;
             }
@@ -480,12 +495,12 @@ impl<'p, 'a> Solver<'p, 'a> {
                     *b += db;
                 });
             iterations += 1;
-            let (mut r, mut lr) = self.residuals(&qx, &qy, &ux, &uy, &mv);
+            let (mut r, mut lr) = self.residuals(&mut red, &qx, &qy, &ux, &uy, &mv);
             if r <= tol && lr <= tol {
                 // Certification: the residual of the state's own product, not of the
                 // accumulated one (which carries the rounding of every CG update).
                 self.state_product(&qx, &qy, &mut ux, &mut uy);
-                (r, lr) = self.residuals(&qx, &qy, &ux, &uy, &mv);
+                (r, lr) = self.residuals(&mut red, &qx, &qy, &ux, &uy, &mv);
             }
             if r >= best {
                 tighten = (tighten * 0.01).max(1e-6);
@@ -508,22 +523,22 @@ impl<'p, 'a> Solver<'p, 'a> {
         }
 
         // Final state.
-        let mut state = Vec::with_capacity(n);
-        let mut slip = Vec::with_capacity(n);
-        for k in 0..n {
-            let w = self.rigid(&mv, k);
-            let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
-            let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
-            let st = if z.0.hypot(z.1) > self.cap[k] && self.cap[k] > 0.0
-                || self.cap[k] == 0.0 && s.0.hypot(s.1) > 0.0
-            {
-                ElementState::Slip
-            } else {
-                ElementState::Stick
-            };
-            state.push(st);
-            slip.push(s);
-        }
+        let (state, slip): (Vec<ElementState>, Vec<(f64, f64)>) = (0..n)
+            .into_par_iter()
+            .map(|k| {
+                let w = self.rigid(&mv, k);
+                let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+                let z = (qx[k] + self.rho * s.0, qy[k] + self.rho * s.1);
+                let st = if norm(z.0, z.1) > self.cap[k] && self.cap[k] > 0.0
+                    || self.cap[k] == 0.0 && norm(s.0, s.1) > 0.0
+                {
+                    ElementState::Slip
+                } else {
+                    ElementState::Stick
+                };
+                (st, s)
+            })
+            .unzip();
         let n_slip = state.iter().filter(|s| **s == ElementState::Slip).count();
         let regime = if n_slip == 0 { Regime::FullStick } else { Regime::PartialSlip };
         let (shift, rotation) = self.shift_rotation(&mv);
@@ -542,10 +557,10 @@ impl<'p, 'a> Solver<'p, 'a> {
         };
         Ok(FastSolution {
             regime,
-            traction: qx.iter().zip(&qy).map(|(a, b)| (*a, *b)).collect(),
+            traction: qx.par_iter().zip(&qy).map(|(a, b)| (*a, *b)).collect(),
             state,
             slip,
-            displacement: ux.iter().zip(&uy).map(|(a, b)| (*a, *b)).collect(),
+            displacement: ux.par_iter().zip(&uy).map(|(a, b)| (*a, *b)).collect(),
             shift,
             rotation,
             centre: self.centre,
@@ -553,6 +568,137 @@ impl<'p, 'a> Solver<'p, 'a> {
             moment,
             info,
         })
+    }
+
+    /// The classification of a Newton step (after the first) at the state `q`, `u`, `mv`:
+    /// an element with $|\mathbf q_k + \rho\,\mathbf s_k| \le c_k$ sticks, the others slip
+    /// and their traction is projected on the disc along that vector (its unit vector in
+    /// `nvec`); `dq` gets each element's traction change. In parallel over fixed blocks,
+    /// each element on its own. Returns whether no element changed between stick and slip,
+    /// and whether any traction changed.
+    fn classify(
+        &self,
+        mv: &[f64],
+        (ux, uy): (&[f64], &[f64]),
+        (qx, qy): (&mut [f64], &mut [f64]),
+        stick: &mut [bool],
+        nvec: &mut [(f64, f64)],
+        (dqx, dqy): (&mut [f64], &mut [f64]),
+    ) -> (bool, bool) {
+        const C: usize = REDUCE_CHUNK;
+        qx.par_chunks_mut(C)
+            .zip(qy.par_chunks_mut(C))
+            .zip(stick.par_chunks_mut(C).zip(nvec.par_chunks_mut(C)))
+            .zip(dqx.par_chunks_mut(C).zip(dqy.par_chunks_mut(C)))
+            .enumerate()
+            .map(|(blk, (((qx, qy), (stick, nvec)), (dqx, dqy)))| {
+                let (mut same, mut moved) = (true, false);
+                for o in 0..qx.len() {
+                    let k = blk * C + o;
+                    let w = self.rigid(mv, k);
+                    let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+                    let z = (qx[o] + self.rho * s.0, qy[o] + self.rho * s.1);
+                    let zr = norm(z.0, z.1);
+                    let old = (qx[o], qy[o]);
+                    let was_stick = stick[o];
+                    if self.cap[k] == 0.0 {
+                        stick[o] = false;
+                        qx[o] = 0.0;
+                        qy[o] = 0.0;
+                    } else if zr <= self.cap[k] {
+                        stick[o] = true;
+                    } else {
+                        stick[o] = false;
+                        let nk = (z.0 / zr, z.1 / zr);
+                        nvec[o] = nk;
+                        qx[o] = self.cap[k] * nk.0;
+                        qy[o] = self.cap[k] * nk.1;
+                    }
+                    dqx[o] = qx[o] - old.0;
+                    dqy[o] = qy[o] - old.1;
+                    moved |= dqx[o] != 0.0 || dqy[o] != 0.0;
+                    same &= stick[o] == was_stick;
+                }
+                (same, moved)
+            })
+            .reduce(|| (true, false), |a, b| (a.0 && b.0, a.1 || b.1))
+    }
+
+    /// The Newton system at the state `u`, `mv` with the active set `stick` (slip elements
+    /// along `nvec`), into `w`: the free components (dofs, in element order: both axes of a
+    /// stick element, or its admitted direction; the tangent of a slip element with
+    /// capacity), each element's dof range, $D$ and the right-hand side $P^{\mathsf T}\mathbf
+    /// s$. Two passes over fixed blocks of elements, in parallel: the blocks' dof counts
+    /// (their offsets follow in order), then each block fills its own range.
+    fn system(
+        &self,
+        w: &mut Work,
+        stick: &[bool],
+        nvec: &[(f64, f64)],
+        mv: &[f64],
+        (ux, uy): (&[f64], &[f64]),
+    ) {
+        const C: usize = REDUCE_CHUNK;
+        let n = self.n;
+        let count = |k: usize| match (&self.dirs, stick[k]) {
+            (None, true) => 2,
+            (Some(_), true) => 1,
+            (None, false) if self.cap[k] > 0.0 => 1,
+            _ => 0,
+        };
+        (0..n.div_ceil(C))
+            .into_par_iter()
+            .map(|b| (b * C..((b + 1) * C).min(n)).map(count).sum::<usize>())
+            .collect_into_vec(&mut w.blocks);
+        let total: usize = w.blocks.iter().sum();
+        w.dofs.resize(total, Dof::default());
+        w.diag_d.resize(total, 0.0);
+        w.rhs.resize(total, 0.0);
+        w.first.resize(n + 1, 0);
+        w.first[n] = total;
+        // Each block's slices of the dof arrays and of `first`, with its first dof's index.
+        let mut parts = Vec::with_capacity(w.blocks.len());
+        let (mut dofs, mut dd, mut rhs) = (&mut w.dofs[..], &mut w.diag_d[..], &mut w.rhs[..]);
+        let mut first = &mut w.first[..n];
+        let mut offset = 0;
+        for (b, &len) in w.blocks.iter().enumerate() {
+            let (d0, d1) = std::mem::take(&mut dofs).split_at_mut(len);
+            let (e0, e1) = std::mem::take(&mut dd).split_at_mut(len);
+            let (r0, r1) = std::mem::take(&mut rhs).split_at_mut(len);
+            let (f0, f1) = std::mem::take(&mut first).split_at_mut(C.min(n - b * C));
+            (dofs, dd, rhs, first) = (d1, e1, r1, f1);
+            parts.push((b, offset, d0, e0, r0, f0));
+            offset += len;
+        }
+        parts.into_par_iter().for_each(|(b, offset, dofs, dd, rhs, first)| {
+            let mut i = 0;
+            for (o, f) in first.iter_mut().enumerate() {
+                let k = b * C + o;
+                *f = offset + i;
+                let w = self.rigid(mv, k);
+                let s = self.proj(k, (w.0 - ux[k], w.1 - uy[k]));
+                let st = stick[k];
+                let mut push = |e: (f64, f64), d: f64| {
+                    dofs[i] = Dof { k: k as u32, e, stick: st };
+                    dd[i] = d;
+                    rhs[i] = e.0 * s.0 + e.1 * s.1;
+                    i += 1;
+                };
+                match (&self.dirs, st) {
+                    (None, true) => {
+                        push((1.0, 0.0), 0.0);
+                        push((0.0, 1.0), 0.0);
+                    }
+                    (Some(d), true) => push(d[k], 0.0),
+                    (None, false) if self.cap[k] > 0.0 => {
+                        let nk = nvec[k];
+                        let ns = (nk.0 * s.0 + nk.1 * s.1).max(0.0);
+                        push((-nk.1, nk.0), ns / self.cap[k]);
+                    }
+                    _ => {}
+                }
+            }
+        });
     }
 
     /// Shift and rotation from the mode coefficients.

@@ -9,9 +9,14 @@ use super::solves::{Ctx, Tally};
 use crate::error::{Error, Result};
 use crate::fast::{FastSolution, WarmStart};
 use crate::solve::{ElementState, Regime};
+use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::time::Instant;
 use stickslip_lattice::{ContactGrid, ConvScratch, TensorConvolution};
+
+/// Block length of the stepper's parallel sums over cells: fixed blocks, their sums added
+/// in order, so a path gives the same bits whatever the number of threads.
+const BLOCK: usize = 4096;
 
 impl<'a> HistoryProblem<'a> {
     /// Plan the operator (once for the path) and return the stepper at the unloaded,
@@ -384,14 +389,17 @@ impl LoadHistory<'_> {
         };
         let r = if r.is_finite() { r.clamp(0.0, 4.0) } else { 0.0 };
         let f = self.problem.friction;
-        let mut traction = Vec::with_capacity(self.traction.len());
-        let mut state = Vec::with_capacity(self.traction.len());
-        for ((q, d), p) in self.traction.iter().zip(&self.dq).zip(&self.grid.pressure) {
-            let t = (q.0 + r * d.0, q.1 + r * d.1);
-            let slips = t.0.hypot(t.1) >= f * p && *p > 0.0;
-            traction.push(t);
-            state.push(if slips { ElementState::Slip } else { ElementState::Stick });
-        }
+        let (traction, state) = self
+            .traction
+            .par_iter()
+            .zip(&self.dq)
+            .zip(&self.grid.pressure)
+            .map(|((q, d), p)| {
+                let t = (q.0 + r * d.0, q.1 + r * d.1);
+                let slips = t.0.hypot(t.1) >= f * p && *p > 0.0;
+                (t, if slips { ElementState::Slip } else { ElementState::Stick })
+            })
+            .unzip();
         WarmStart {
             traction,
             shift: (r * self.last_increment.0 .0, r * self.last_increment.0 .1),
@@ -419,32 +427,46 @@ impl LoadHistory<'_> {
             let a = theta + PI * j as f64 / SLIP_RANGE_DIRECTIONS as f64;
             (a.cos(), a.sin())
         });
-        let mut dd = 0.0;
-        let (mut contact, mut stick) = (0usize, 0usize);
-        for k in 0..n {
-            let (q0, q1, ds) = (self.traction[k], sol.traction[k], sol.slip[k]);
-            let now = self.grid.pressure[k] > 0.0;
-            if now || self.pressure_prev[k] > 0.0 {
-                let d = 0.5 * ((q0.0 + q1.0) * ds.0 + (q0.1 + q1.1) * ds.1);
-                self.dissipation[k] += d;
-                dd += d;
-            }
-            if now {
-                contact += 1;
-                if sol.state[k] == ElementState::Stick {
-                    stick += 1;
+        // The per-cell updates in parallel over fixed blocks of cells, the block sums added
+        // in order (the same bits whatever the number of threads).
+        let (traction, pressure, prev) = (&self.traction, &self.grid.pressure, &self.pressure_prev);
+        let parts: Vec<(f64, usize, usize)> = self
+            .dissipation
+            .par_chunks_mut(BLOCK)
+            .zip(self.slip.par_chunks_mut(BLOCK).zip(self.extent.par_chunks_mut(BLOCK)))
+            .enumerate()
+            .map(|(b, (diss, (slip, extent)))| {
+                let (mut dd, mut contact, mut stick) = (0.0, 0usize, 0usize);
+                for (o, (dk, (s, ext))) in
+                    diss.iter_mut().zip(slip.iter_mut().zip(extent.iter_mut())).enumerate()
+                {
+                    let k = b * BLOCK + o;
+                    let (q0, q1, ds) = (traction[k], sol.traction[k], sol.slip[k]);
+                    let now = pressure[k] > 0.0;
+                    if now || prev[k] > 0.0 {
+                        let d = 0.5 * ((q0.0 + q1.0) * ds.0 + (q0.1 + q1.1) * ds.1);
+                        *dk += d;
+                        dd += d;
+                    }
+                    if now {
+                        contact += 1;
+                        if sol.state[k] == ElementState::Stick {
+                            stick += 1;
+                        }
+                        s.0 += ds.0;
+                        s.1 += ds.1;
+                        for (j, d) in dirs.iter().enumerate() {
+                            let v = s.0 * d.0 + s.1 * d.1;
+                            ext[2 * j] = ext[2 * j].min(v);
+                            ext[2 * j + 1] = ext[2 * j + 1].max(v);
+                        }
+                    }
                 }
-                let s = &mut self.slip[k];
-                s.0 += ds.0;
-                s.1 += ds.1;
-                let ext = &mut self.extent[k];
-                for (j, d) in dirs.iter().enumerate() {
-                    let v = s.0 * d.0 + s.1 * d.1;
-                    ext[2 * j] = ext[2 * j].min(v);
-                    ext[2 * j + 1] = ext[2 * j + 1].max(v);
-                }
-            }
-        }
+                (dd, contact, stick)
+            })
+            .collect();
+        let (dd, contact, stick) =
+            parts.iter().fold((0.0, 0, 0), |a, b| (a.0 + b.0, a.1 + b.1, a.2 + b.2));
         let rotating = target.moment.is_some();
         let (f0, m0) = (self.force, self.moment);
         let (f1, m1) = (sol.resultant, if rotating { sol.moment } else { 0.0 });
@@ -454,17 +476,26 @@ impl LoadHistory<'_> {
         // K q^n for the next step's prescribed displacement and the stored energy: the
         // solver's displacement is K q^n + u0 (u0 = -K q^(n-1) uncoupled; the first step
         // uncoupled has none), so K q^n comes without another product.
-        let (qx, qy): (Vec<f64>, Vec<f64>) = sol.traction.iter().copied().unzip();
-        let mut u2 = 0.0;
-        for k in 0..n {
-            let u = sol.displacement[k];
-            let kq = match u0 {
-                None => u,
-                Some(u0) => (u.0 - u0[k].0, u.1 - u0[k].1),
-            };
-            self.kq[k] = kq;
-            u2 += qx[k] * kq.0 + qy[k] * kq.1;
-        }
+        let u2: f64 = self
+            .kq
+            .par_chunks_mut(BLOCK)
+            .enumerate()
+            .map(|(b, kq)| {
+                let mut u2 = 0.0;
+                for (o, kq) in kq.iter_mut().enumerate() {
+                    let k = b * BLOCK + o;
+                    let (u, q) = (sol.displacement[k], sol.traction[k]);
+                    *kq = match u0 {
+                        None => u,
+                        Some(u0) => (u.0 - u0[k].0, u.1 - u0[k].1),
+                    };
+                    u2 += q.0 * kq.0 + q.1 * kq.1;
+                }
+                u2
+            })
+            .collect::<Vec<f64>>()
+            .iter()
+            .sum();
         let e = (theta.cos(), theta.sin());
         let dot = |v: (f64, f64)| v.0 * e.0 + v.1 * e.1;
         let dtan = dot(f1) - dot(f0);
@@ -472,9 +503,9 @@ impl LoadHistory<'_> {
         if dtan != 0.0 && dshift != 0.0 && dtan / dshift > 0.0 && sol.regime != Regime::GrossSlip {
             self.stiffness = Some(dtan / dshift);
         }
-        for ((d, a), b) in self.dq.iter_mut().zip(&self.traction).zip(&sol.traction) {
+        self.dq.par_iter_mut().zip(&self.traction).zip(&sol.traction).for_each(|((d, a), b)| {
             *d = (b.0 - a.0, b.1 - a.1);
-        }
+        });
         self.last_increment_load = dir;
         self.traction.clone_from(&sol.traction);
         self.state.clone_from(&sol.state);
@@ -485,11 +516,16 @@ impl LoadHistory<'_> {
         self.moment = if rotating {
             m1
         } else {
-            (0..n)
-                .map(|k| {
-                    area * ((self.grid.x[k] - centre.0) * qy[k]
-                        - (self.grid.y[k] - centre.1) * qx[k])
+            let (x, y, q) = (&self.grid.x, &self.grid.y, &sol.traction);
+            (0..n.div_ceil(BLOCK))
+                .into_par_iter()
+                .map(|b| {
+                    (b * BLOCK..((b + 1) * BLOCK).min(n))
+                        .map(|k| area * ((x[k] - centre.0) * q[k].1 - (y[k] - centre.1) * q[k].0))
+                        .sum::<f64>()
                 })
+                .collect::<Vec<f64>>()
+                .iter()
                 .sum()
         };
         self.last_increment = (sol.shift, drot);

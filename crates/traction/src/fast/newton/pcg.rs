@@ -50,20 +50,59 @@ pub(super) fn small_spd_solve(a: &[[f64; 3]; 3], m: usize, b: &[f64]) -> Option<
     Some(x)
 }
 
+/// The buffers of the Newton steps of one solve: the Newton system (its dofs in element
+/// order, each element's dof range, $D$ and the right-hand side), the increment $x$, and
+/// the PCG's vectors. Allocated at the first Newton step and reused by the later ones: a
+/// fresh set of zeroed O(n) vectors at every step cost page faults and a memset (about a
+/// seventh of a history step at 256 cells across, measured with perf before this change).
+/// Every buffer is resized to the step's length and then written in full before it is
+/// read, so what a buffer held at the last step never enters this one.
+#[derive(Default)]
+pub(super) struct Work {
+    pub(super) dofs: Vec<Dof>,
+    /// `first[k]..first[k + 1]` are element $k$'s dofs; `first[n]` is their count.
+    pub(super) first: Vec<usize>,
+    pub(super) diag_d: Vec<f64>,
+    pub(super) rhs: Vec<f64>,
+    /// The Newton increment of the dofs (the PCG's solution).
+    pub(super) x: Vec<f64>,
+    /// The dof counts of the element blocks, then their offsets (the system build).
+    pub(super) blocks: Vec<usize>,
+    rows: Vec<[f64; 3]>,
+    minv: Vec<f64>,
+    wt: Vec<f64>,
+    gb: Vec<Vec<f64>>,
+    bj: Vec<f64>,
+    y: Vec<f64>,
+    r: Vec<f64>,
+    z: Vec<f64>,
+    p: Vec<f64>,
+    hp: Vec<f64>,
+}
+
+/// Resize `v` to `n` entries without writing those it keeps (for buffers written in full
+/// before they are read).
+fn sized(v: &mut Vec<f64>, n: usize) {
+    v.resize(n, 0.0);
+}
+
 impl Solver<'_, '_> {
     /// $H x$ with $H = P^{\mathsf T}KP + D$; `first[k]..first[k + 1]` are the dofs of
     /// element $k$ (dofs are in element order). With `extra` = $\Delta\mathbf q$ (element
-    /// tractions), $P^{\mathsf T}K(Px + \Delta\mathbf q) + Dx$ in the same product.
+    /// tractions), $P^{\mathsf T}K(Px + \Delta\mathbf q) + Dx$ in the same product. Returns
+    /// $x\cdot Hx$ (without `extra`'s share: meant for `extra = None`), summed in the fixed
+    /// blocks of [`Reducer`] as it is written.
     #[allow(clippy::too_many_arguments)]
     fn h_apply(
         &mut self,
+        red: &mut Reducer,
         dofs: &[Dof],
         first: &[usize],
         diag_d: &[f64],
         x: &[f64],
         extra: Option<(&[f64], &[f64])>,
         out: &mut [f64],
-    ) {
+    ) -> f64 {
         let mut px = std::mem::take(&mut self.wx);
         let mut py = std::mem::take(&mut self.wy);
         let mut vx = std::mem::take(&mut self.vx);
@@ -82,34 +121,67 @@ impl Solver<'_, '_> {
             *b = sb;
         });
         self.product(&px, &py, &mut vx, &mut vy);
-        out.par_iter_mut().zip(dofs.par_iter()).zip(diag_d.par_iter().zip(x.par_iter())).for_each(
-            |((o, d), (dd, xv))| *o = d.e.0 * vx[d.k as usize] + d.e.1 * vy[d.k as usize] + dd * xv,
-        );
+        let (ux, uy) = (&vx, &vy);
+        out.par_chunks_mut(REDUCE_CHUNK)
+            .zip(dofs.par_chunks(REDUCE_CHUNK))
+            .zip(diag_d.par_chunks(REDUCE_CHUNK).zip(x.par_chunks(REDUCE_CHUNK)))
+            .map(|((oc, dc), (ddc, xc))| {
+                let mut s = 0.0;
+                for ((o, d), (dd, xv)) in oc.iter_mut().zip(dc).zip(ddc.iter().zip(xc)) {
+                    *o = d.e.0 * ux[d.k as usize] + d.e.1 * uy[d.k as usize] + dd * xv;
+                    s += xv * *o;
+                }
+                [s, 0.0, 0.0]
+            })
+            .collect_into_vec(&mut red.parts);
         self.wx = px;
         self.wy = py;
         self.vx = vx;
         self.vy = vy;
+        red.total()[0]
     }
 
     /// $z = G^{-1} r$: the Fourier preconditioner $M$ on every component, each scaled by its
     /// weight $w_i$, plus the weighted Jacobi term on the slip tangents,
     /// $G^{-1} = W P^{\mathsf T} M P W + c\,(I - W^2)\,J$ (see [`SLIP_JACOBI`]), or Jacobi
     /// throughout when no Fourier preconditioner is planned. Stick components have
-    /// $w_i = 1$, so their block is the Fourier inverse unchanged.
+    /// $w_i = 1$, so their block is the Fourier inverse unchanged. With `rows`, also returns
+    /// $Bz$ (`rows[i][j]` $= B_{ji}$), summed in the fixed blocks of [`Reducer`] as $z$ is
+    /// written (zero without).
+    #[allow(clippy::too_many_arguments)]
     fn g_apply(
         &mut self,
+        red: &mut Reducer,
         dofs: &[Dof],
         first: &[usize],
         minv: &[f64],
         wt: &[f64],
+        rows: Option<&[[f64; 3]]>,
         r: &[f64],
         z: &mut [f64],
-    ) {
+    ) -> [f64; 3] {
+        // Adds row_i z_i to the block's sum, in index order.
+        let tally = |c: &mut [f64; 3], i: usize, zi: f64| {
+            if let Some(rows) = rows {
+                for (cj, rj) in c.iter_mut().zip(rows[i]) {
+                    *cj += rj * zi;
+                }
+            }
+        };
         let Some(op) = &self.prec else {
-            z.par_iter_mut().zip(minv.par_iter().zip(r.par_iter())).for_each(|(z, (m, r))| {
-                *z = m * r;
-            });
-            return;
+            z.par_chunks_mut(REDUCE_CHUNK)
+                .enumerate()
+                .map(|(b, zc)| {
+                    let mut c = [0.0; 3];
+                    for (o, zv) in zc.iter_mut().enumerate() {
+                        let i = b * REDUCE_CHUNK + o;
+                        *zv = minv[i] * r[i];
+                        tally(&mut c, i, *zv);
+                    }
+                    c
+                })
+                .collect_into_vec(&mut red.parts);
+            return red.total();
         };
         let (px, py, vx, vy) = (&mut self.wx, &mut self.wy, &mut self.vx, &mut self.vy);
         px.par_iter_mut().zip(py.par_iter_mut()).enumerate().for_each(|(k, (a, b))| {
@@ -124,52 +196,57 @@ impl Solver<'_, '_> {
         });
         op.apply(px, py, vx, vy, self.scratch);
         let (vx, vy) = (&*vx, &*vy);
-        z.par_iter_mut()
-            .zip(dofs.par_iter().zip(wt.par_iter()))
-            .zip(minv.par_iter().zip(r.par_iter()))
-            .for_each(|((z, (d, w)), (m, r))| {
-                let fourier = w * (d.e.0 * vx[d.k as usize] + d.e.1 * vy[d.k as usize]);
-                *z = if d.stick { fourier } else { fourier + SLIP_JACOBI * (1.0 - w * w) * m * r };
-            });
+        z.par_chunks_mut(REDUCE_CHUNK)
+            .enumerate()
+            .map(|(b, zc)| {
+                let mut c = [0.0; 3];
+                for (o, zv) in zc.iter_mut().enumerate() {
+                    let i = b * REDUCE_CHUNK + o;
+                    let (d, w) = (dofs[i], wt[i]);
+                    let fourier = w * (d.e.0 * vx[d.k as usize] + d.e.1 * vy[d.k as usize]);
+                    *zv = if d.stick {
+                        fourier
+                    } else {
+                        fourier + SLIP_JACOBI * (1.0 - w * w) * minv[i] * r[i]
+                    };
+                    tally(&mut c, i, *zv);
+                }
+                c
+            })
+            .collect_into_vec(&mut red.parts);
+        red.total()
     }
 
     /// Preconditioned projected CG for
     /// $Hx - B^{\mathsf T}\lambda = \text{rhs},\ Bx = b$ (Gould, Hribar & Nocedal 2001,
     /// Algorithm II with a constraint preconditioner $G$: $\mathrm{diag}(H)$, or the Fourier
-    /// preconditioner on the stick block). Stops when the projected preconditioned residual
-    /// falls below `eta` times its start or below `abs_floor` (traction units). Returns $x$,
-    /// $\lambda$ (the rigid-mode increments) and the iteration count. With `dq`, the state's
-    /// traction has changed by $\Delta\mathbf q$ since `rhs` was evaluated: the start
-    /// residual is $\text{rhs} - P^{\mathsf T}K\Delta\mathbf q - Hx_0$, from one product.
-    /// The displacement of the step, $K(\Delta\mathbf q + Px)$, is left in `dux`, `duy`.
+    /// preconditioner on the stick block), for the system in `w` (dofs, their element
+    /// ranges, $D$ and rhs). Stops when the projected preconditioned residual falls below
+    /// `eta` times its start or below `abs_floor` (traction units). Leaves $x$ in `w.x` and
+    /// returns $\lambda$ (the rigid-mode increments) and the iteration count. With `dq`, the
+    /// state's traction has changed by $\Delta\mathbf q$ since `rhs` was evaluated (not all
+    /// zero: the caller leaves it out then): the start residual is
+    /// $\text{rhs} - P^{\mathsf T}K\Delta\mathbf q - Hx_0$, from one product. The
+    /// displacement of the step, $K(\Delta\mathbf q + Px)$, is left in `dux`, `duy`.
     #[allow(clippy::too_many_arguments, clippy::needless_range_loop)]
     pub(super) fn pcg(
         &mut self,
-        dofs: &[Dof],
-        diag_d: &[f64],
-        rhs: &[f64],
+        w: &mut Work,
         b: &[f64],
         dq: Option<(&[f64], &[f64])>,
         eta: f64,
         abs_floor: f64,
-    ) -> Result<(Vec<f64>, Vec<f64>, usize)> {
+    ) -> Result<(Vec<f64>, usize)> {
         let g = self.p.grid;
+        let Work { dofs, first, diag_d, rhs, x, rows, minv, wt, gb, bj, y, r, z, p, hp, .. } = w;
+        let (dofs, first, diag_d, rhs) = (&dofs[..], &first[..], &diag_d[..], &rhs[..]);
         let nd = dofs.len();
         let nm = self.modes.len();
-        // Element -> dof ranges (dofs come in element order).
-        let mut first = vec![0usize; self.n + 1];
-        for d in dofs {
-            first[d.k as usize + 1] += 1;
-        }
-        for k in 0..self.n {
-            first[k + 1] += first[k];
-        }
         let modes = self.modes.clone();
         // Constraint row j at dof d: B_jd = m_j(x_k) . e_d.
         let mut red = Reducer::new(nd);
         // The constraint rows, evaluated once: the projection streams them at every CG step.
-        let rows: Vec<[f64; 3]> = dofs
-            .par_iter()
+        dofs.par_iter()
             .map(|d| {
                 let mut row = [0.0; 3];
                 for (j, m) in modes.iter().enumerate() {
@@ -178,12 +255,12 @@ impl Solver<'_, '_> {
                 }
                 row
             })
-            .collect();
+            .collect_into_vec(rows);
+        let rows = &rows[..];
         let k0 = self.k0;
         // Jacobi values 1/(K_dd(0) + D_d) and the preconditioner's weights
         // w_d = 1 / sqrt(1 + (D_d / K_dd(0))^2) (1 on stick components).
-        let (minv, wt): (Vec<f64>, Vec<f64>) = dofs
-            .par_iter()
+        dofs.par_iter()
             .zip(diag_d.par_iter())
             .map(|(d, dd)| {
                 let kd = d.e.0 * (k0[0] * d.e.0 + k0[1] * d.e.1)
@@ -192,28 +269,29 @@ impl Solver<'_, '_> {
                 let x = dd / kd;
                 (m, if d.stick { 1.0 } else { (1.0 + x * x).sqrt().recip() })
             })
-            .unzip();
+            .unzip_into_vecs(minv, wt);
+        let (minv, wt) = (&minv[..], &wt[..]);
         // G^-1 b_j and W = B G^-1 B^T.
-        let mut gb: Vec<Vec<f64>> = Vec::with_capacity(nm);
-        for j in 0..nm {
-            let bj: Vec<f64> = rows.par_iter().map(|row| row[j]).collect();
-            let mut y = vec![0.0; nd];
-            self.g_apply(dofs, &first, &minv, &wt, &bj, &mut y);
-            gb.push(y);
+        gb.resize_with(nm, Vec::new);
+        for (j, gj) in gb.iter_mut().enumerate() {
+            rows.par_iter().map(|row| row[j]).collect_into_vec(bj);
+            sized(gj, nd);
+            self.g_apply(&mut red, dofs, first, minv, wt, None, bj, gj);
         }
-        let mut w = [[0.0; 3]; 3];
+        let gb = &gb[..nm];
+        let mut wm = [[0.0; 3]; 3];
         for i in 0..nm {
             for j in 0..nm {
                 let gj = &gb[j];
-                w[i][j] = red.sum(nd, |r| r.map(|k| rows[k][i] * gj[k]).sum());
+                wm[i][j] = red.sum(nd, |r| r.map(|k| rows[k][i] * gj[k]).sum());
             }
         }
         // Symmetrise (G^-1 is symmetric up to rounding).
         for i in 0..nm {
             for j in 0..i {
-                let v = 0.5 * (w[i][j] + w[j][i]);
-                w[i][j] = v;
-                w[j][i] = v;
+                let v = 0.5 * (wm[i][j] + wm[j][i]);
+                wm[i][j] = v;
+                wm[j][i] = v;
             }
         }
         let no_stick = || Error::NoStickLeft {
@@ -222,7 +300,7 @@ impl Solver<'_, '_> {
             iteration: 0,
             free_components: nd,
         };
-        if small_spd_solve(&w, nm, &[1.0; 3][..nm]).is_none() {
+        if small_spd_solve(&wm, nm, &[1.0; 3][..nm]).is_none() {
             return Err(no_stick());
         }
         // Projection: y = G^-1 r, l = W^-1 B y, r <- r - B^T l, z = y - G^-1 B^T l. The
@@ -230,31 +308,19 @@ impl Solver<'_, '_> {
         // Nocedal, §6): it leaves the iteration unchanged in exact arithmetic and keeps z in
         // the null space of B to rounding; the l are summed into the multiplier. Returns
         // (r.z, |z|^2).
-        let mut y = vec![0.0; nd];
+        sized(y, nd);
         let mut project = |this: &mut Self,
                            red: &mut Reducer,
                            r: &mut [f64],
                            z: &mut [f64],
                            acc: &mut [f64; 3]|
          -> Option<(f64, f64)> {
-            this.g_apply(dofs, &first, &minv, &wt, r, &mut y);
-            let yr = &y;
-            let c = red.reduce(nd, |range| {
-                let mut c = [0.0; 3];
-                for k in range {
-                    let row = rows[k];
-                    for (cj, rj) in c.iter_mut().zip(row) {
-                        *cj += rj * yr[k];
-                    }
-                }
-                c
-            });
-            let l = small_spd_solve(&w, nm, &c[..nm])?;
+            let c = this.g_apply(red, dofs, first, minv, wt, Some(rows), r, y);
+            let l = small_spd_solve(&wm, nm, &c[..nm])?;
             for j in 0..nm {
                 acc[j] += l[j];
             }
-            let gbr = &gb;
-            let yr = &y;
+            let yr = &*y;
             r.par_chunks_mut(REDUCE_CHUNK)
                 .zip(z.par_chunks_mut(REDUCE_CHUNK))
                 .enumerate()
@@ -265,7 +331,7 @@ impl Solver<'_, '_> {
                         let row = rows[i];
                         *rv -= row[0] * l[0] + row[1] * l[1] + row[2] * l[2];
                         let mut zi = yr[i];
-                        for (j, gj) in gbr.iter().enumerate() {
+                        for (j, gj) in gb.iter().enumerate() {
                             zi -= l[j] * gj[i];
                         }
                         *zv = zi;
@@ -279,43 +345,41 @@ impl Solver<'_, '_> {
             Some((rz, zz))
         };
         // x0 = G^-1 B^T W^-1 b.
-        let l0 = small_spd_solve(&w, nm, b).ok_or_else(no_stick)?;
-        let mut x: Vec<f64> = (0..nd)
+        let l0 = small_spd_solve(&wm, nm, b).ok_or_else(no_stick)?;
+        (0..nd)
             .into_par_iter()
             .map(|i| gb.iter().zip(&l0).map(|(gj, l)| l * gj[i]).sum())
-            .collect();
+            .collect_into_vec(x);
         // The displacement of the step, K P x, is kept beside x (the displacement is linear
         // in the traction: each CG product K P p also moves it by alpha K P p), so the Newton
         // loop needs no product after the step.
         let mut dux = std::mem::take(&mut self.dux);
         let mut duy = std::mem::take(&mut self.duy);
+        sized(hp, nd);
         // With b = 0 (and no traction change) the start is x0 = 0 and its product is skipped.
-        let dq = dq.filter(|(a, b)| a.iter().chain(b.iter()).any(|v| *v != 0.0));
-        let mut r: Vec<f64> = if dq.is_none() && b.iter().all(|v| *v == 0.0) {
+        if dq.is_none() && b.iter().all(|v| *v == 0.0) {
             dux.par_iter_mut().zip(duy.par_iter_mut()).for_each(|(a, b)| {
                 *a = 0.0;
                 *b = 0.0;
             });
-            rhs.to_vec()
+            r.clear();
+            r.extend_from_slice(rhs);
         } else {
-            let mut hx = vec![0.0; nd];
-            self.h_apply(dofs, &first, diag_d, &x, dq, &mut hx);
+            self.h_apply(&mut red, dofs, first, diag_d, x, dq, hp);
             dux.copy_from_slice(&self.vx);
             duy.copy_from_slice(&self.vy);
-            rhs.par_iter().zip(hx.par_iter()).map(|(a, b)| a - b).collect()
-        };
-        let mut z = vec![0.0; nd];
+            rhs.par_iter().zip(hp.par_iter()).map(|(a, b)| a - b).collect_into_vec(r);
+        }
+        sized(z, nd);
         let mut acc = [0.0; 3];
-        let (mut rz, zz) =
-            project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+        let (mut rz, zz) = project(self, &mut red, r, z, &mut acc).ok_or_else(no_stick)?;
         let stop = (eta * zz.sqrt()).max(abs_floor);
         let mut znorm = zz.sqrt();
-        let mut p = z.clone();
-        let mut hp = vec![0.0; nd];
+        p.clear();
+        p.extend_from_slice(z);
         let mut its = 0;
         while znorm > stop && its < self.p.config.max_cg() {
-            self.h_apply(dofs, &first, diag_d, &p, None, &mut hp);
-            let php = red.sum(nd, |r| r.map(|k| p[k] * hp[k]).sum());
+            let php = self.h_apply(&mut red, dofs, first, diag_d, p, None, hp);
             if php.is_nan() || php <= 0.0 {
                 return Err(Error::NotPositiveDefinite { index: its });
             }
@@ -336,8 +400,7 @@ impl Solver<'_, '_> {
                         *b += alpha * vb;
                     }
                 });
-            let (rz_new, zz) =
-                project(self, &mut red, &mut r, &mut z, &mut acc).ok_or_else(no_stick)?;
+            let (rz_new, zz) = project(self, &mut red, r, z, &mut acc).ok_or_else(no_stick)?;
             let beta = rz_new / rz;
             rz = rz_new;
             znorm = zz.sqrt();
@@ -350,7 +413,7 @@ impl Solver<'_, '_> {
         // G^-1-orthogonal to B (B G^-1 r = 0 up to rounding), so projecting it once more
         // would add nothing to acc but the cost of a preconditioner application.
         let lam: Vec<f64> = acc[..nm].iter().map(|v| -v).collect();
-        Ok((x, lam, its))
+        Ok((lam, its))
     }
 }
 
@@ -390,22 +453,22 @@ const SLIP_JACOBI: f64 = 0.25;
 /// Block length of the deterministic reductions: the sums of the CG iteration are taken in
 /// fixed blocks (in parallel) and the block sums added in order, so a solve gives the same
 /// bits whatever the number of threads and however rayon splits the work.
-const REDUCE_CHUNK: usize = 4096;
+pub(super) const REDUCE_CHUNK: usize = 4096;
 
 /// Deterministic parallel reductions: `f` over fixed blocks of `0..n` (in parallel), the
 /// block results added in order, so the sum does not depend on how rayon splits the work
 /// (unlike a rayon `sum`, whose tree follows work stealing). The buffer of block results is
 /// reused, so the CG loop does not allocate.
-struct Reducer {
-    parts: Vec<[f64; 3]>,
+pub(super) struct Reducer {
+    pub(super) parts: Vec<[f64; 3]>,
 }
 
 impl Reducer {
-    fn new(n: usize) -> Self {
+    pub(super) fn new(n: usize) -> Self {
         Self { parts: Vec::with_capacity(n.div_ceil(REDUCE_CHUNK)) }
     }
 
-    fn reduce(
+    pub(super) fn reduce(
         &mut self,
         n: usize,
         f: impl Fn(std::ops::Range<usize>) -> [f64; 3] + Sync + Send,
@@ -417,12 +480,16 @@ impl Reducer {
         self.total()
     }
 
-    fn sum(&mut self, n: usize, f: impl Fn(std::ops::Range<usize>) -> f64 + Sync + Send) -> f64 {
+    pub(super) fn sum(
+        &mut self,
+        n: usize,
+        f: impl Fn(std::ops::Range<usize>) -> f64 + Sync + Send,
+    ) -> f64 {
         self.reduce(n, |r| [f(r), 0.0, 0.0])[0]
     }
 
     /// The block results in `parts`, added in order.
-    fn total(&self) -> [f64; 3] {
+    pub(super) fn total(&self) -> [f64; 3] {
         self.parts.iter().fold([0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]])
     }
 }
