@@ -184,3 +184,39 @@ fn single_precision_preconditioner() {
     op.apply(&v[0], &v[1], &mut ox, &mut oy, &mut shared);
     assert_eq!((&ox, &oy), (&px, &py));
 }
+
+/// The operators of a lattice's coarsened lattices planned from its kernel are the ones
+/// planned from scratch, to the bit (the coefficients are homogeneous of degree 1 in the cell
+/// size and a power-of-two scaling is exact), for both influence models and oblong cells;
+/// a cell size that is not the kernel's times a power of two is refused.
+#[test]
+fn coarse_operators_from_the_fine_kernel() {
+    let s = steel();
+    let c = Compliance::pair(&s, &s);
+    for model in [InfluenceModel::ExactRectangle, InfluenceModel::PointLoad] {
+        let fine = ContactGrid::hertz_ellipse(0.1, 0.07, 800.0, 200, 140).unwrap();
+        let kernel = TensorConvolution::kernel(&fine, &c, model).unwrap();
+        let (mid, _) = fine.coarsened(24).unwrap();
+        let (coarse, _) = mid.coarsened(24).unwrap();
+        for grid in [&fine, &mid, &coarse] {
+            let direct = TensorConvolution::new(grid, &c, model).unwrap();
+            let shared = TensorConvolution::from_kernel(grid, &kernel).unwrap();
+            assert_eq!(direct.self_term(), shared.self_term());
+            let n = grid.len();
+            let mut seed = 99u64;
+            let qx: Vec<f64> = (0..n).map(|_| lcg(&mut seed)).collect();
+            let qy: Vec<f64> = (0..n).map(|_| lcg(&mut seed)).collect();
+            let mut u = [vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+            let [ux, uy, vx, vy] = &mut u;
+            direct.apply(&qx, &qy, ux, uy, &mut direct.make_scratch());
+            shared.apply(&qx, &qy, vx, vy, &mut shared.make_scratch());
+            assert!(ux == vx && uy == vy, "{model:?}, {} elements", n);
+        }
+        let mut off = coarse.clone();
+        off.hx *= 1.5;
+        off.x.iter_mut().for_each(|x| *x *= 1.5);
+        let e = TensorConvolution::from_kernel(&off, &kernel).unwrap_err();
+        println!("{e}");
+        assert!(matches!(e, stickslip_lattice::Error::OutOfDomain { .. }));
+    }
+}

@@ -208,6 +208,84 @@ impl TensorConvolution {
         [op.kxx, op.kxy, op.kyy] = padded_spectra(nx, ny, mx, my, &quad);
         Ok(op)
     }
+
+    /// The kernel of [`TensorConvolution::new`] for `grid` (its offsets in one quadrant), to
+    /// plan the operators of this grid and of its coarsened lattices from
+    /// ([`TensorConvolution::from_kernel`]) without evaluating the influence coefficients
+    /// again.
+    ///
+    /// # Errors
+    /// As [`TensorConvolution::new`].
+    pub fn kernel(
+        grid: &ContactGrid,
+        c: &Compliance,
+        model: InfluenceModel,
+    ) -> Result<TensorKernel> {
+        let (nx, ny, _, _, _) = grid.lattice_cells()?;
+        let values = kernel_quadrant(grid, c, model, nx, ny);
+        Ok(TensorKernel { h: (grid.hx, grid.hy), cells: (nx, ny), values })
+    }
+
+    /// The operator of `grid` from the kernel of the same bodies and model on a lattice whose
+    /// cells are $2^k$ ($k \ge 0$) times smaller and which spans at least as many cells
+    /// (the grid itself, or the finer lattice `grid` was coarsened from,
+    /// [`ContactGrid::coarsened`]). The influence coefficients of the uniform-rectangle
+    /// tensor (and of the point-load model) are homogeneous of degree 1 in the cell size at
+    /// a fixed offset in cells, and scaling by a power of two is exact in floating point at
+    /// every step of their evaluation, so the operator is the one [`TensorConvolution::new`]
+    /// plans, to the bit, at the cost of the transforms alone. The bodies and model are the
+    /// caller's to keep the same.
+    ///
+    /// # Errors
+    /// As [`TensorConvolution::new`]; [`crate::Error::OutOfDomain`] if the cell sizes are not
+    /// the kernel's times one power of two, or the lattice spans more cells than the
+    /// kernel's.
+    pub fn from_kernel(grid: &ContactGrid, kernel: &TensorKernel) -> Result<Self> {
+        let (nx, ny, _, _, cell) = grid.lattice_cells()?;
+        let scale = grid.hx / kernel.h.0;
+        let k = scale.log2().round();
+        let power = k >= 0.0 && scale == 2f64.powi(k as i32) && grid.hy == scale * kernel.h.1;
+        if !power {
+            return Err(crate::Error::OutOfDomain {
+                name: "cell size over the kernel's cell size",
+                value: scale,
+                allowed: "a power of two >= 1, the same along x and y",
+            });
+        }
+        if nx > kernel.cells.0 || ny > kernel.cells.1 {
+            return Err(crate::Error::OutOfDomain {
+                name: "lattice cells beyond the kernel's",
+                value: nx.saturating_sub(kernel.cells.0).max(ny.saturating_sub(kernel.cells.1))
+                    as f64,
+                allowed: "0: a lattice within the kernel's",
+            });
+        }
+        let (mx, my) = (fast_size(2 * nx - 1), fast_size(2 * ny - 1));
+        let mut op = Self::on_cells(nx, ny, mx, my, cell);
+        let kx = kernel.cells.0;
+        let mut quad = vec![[0.0; 3]; nx * ny];
+        quad.par_chunks_mut(nx).enumerate().for_each(|(dj, row)| {
+            for (o, v) in row.iter_mut().zip(&kernel.values[dj * kx..dj * kx + nx]) {
+                *o = v.map(|t| scale * t);
+            }
+        });
+        op.self_term = quad[0];
+        [op.kxx, op.kxy, op.kyy] = padded_spectra(nx, ny, mx, my, &quad);
+        Ok(op)
+    }
+}
+
+/// The influence coefficients of a lattice's tangential operator for the offsets of one
+/// quadrant ([`TensorConvolution::kernel`]), from which [`TensorConvolution::from_kernel`]
+/// plans the operators of this lattice and of its coarsened lattices.
+#[derive(Debug, Clone)]
+pub struct TensorKernel {
+    /// Cell size $(h_x, h_y)$.
+    h: (f64, f64),
+    /// Offsets $(n_x, n_y)$ held: $0\le d_i<n_x$, $0\le d_j<n_y$.
+    cells: (usize, usize),
+    /// $K(d_i, d_j)$ per unit traction, `[dj * nx + di]`, as `[Kxx, Kxy, Kyy]`.
+    values: Vec<[f64; 3]>,
 }
 
 /// The kernel tensors $K(d_i, d_j)$ of `grid`'s lattice for the offsets $0\le d_i<n_x$,
