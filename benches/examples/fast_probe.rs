@@ -57,14 +57,27 @@ fn main() {
     let product = t1.elapsed().as_secs_f64() / reps as f64;
     // The solver's stick-block preconditioner (one unpadded periodic product on the
     // bounding box), applied once per CG step beside the operator's product.
-    let prec = TensorConvolution::inverse_symbol(&g, &problem.compliance(), op.self_term()[0])
-        .expect("preconditioner");
+    let prec =
+        TensorConvolution::<f64>::inverse_symbol(&g, &problem.compliance(), op.self_term()[0])
+            .expect("preconditioner");
     prec.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
     let t1 = Instant::now();
     for _ in 0..reps {
         prec.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
     }
     let prec_time = t1.elapsed().as_secs_f64() / reps as f64;
+    drop(prec);
+    // The same preconditioner with its transforms in single precision (not the solver's: it
+    // adds a CG step in most of the loads measured, see docs/peers.md "Partial slip").
+    let prec =
+        TensorConvolution::<f32>::inverse_symbol(&g, &problem.compliance(), op.self_term()[0])
+            .expect("preconditioner");
+    prec.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
+    let t1 = Instant::now();
+    for _ in 0..reps {
+        prec.apply(&qx, &qy, &mut ux, &mut uy, &mut scratch);
+    }
+    let prec32 = t1.elapsed().as_secs_f64() / reps as f64;
     drop(prec);
     // The bound of issue 30: one real FFT pair (forward and inverse, no padding exploited)
     // of the padded size, timed here in the same run.
@@ -115,13 +128,14 @@ fn main() {
     let n_stick = sol.state.iter().filter(|s| **s == ElementState::Stick).count();
     let r_stick = (n_stick as f64 * h * h / std::f64::consts::PI).sqrt();
     println!(
-        "across {across}: N = {n}, FFT {:?}, setup {setup:.2} s, product {:.1} ms, preconditioner {:.1} ms; \
+        "across {across}: N = {n}, FFT {:?}, setup {setup:.2} s, product {:.1} ms, preconditioner {:.1} ms (single precision {:.1} ms); \
          {} levels ({:.2} s), {} Newton, {} CG, {} products, residual {:.1e}; solve {secs:.2} s wall, {cpu:.2} s CPU \
          ({:.0} % in products), peak memory {:.0} MiB; stick radius {:+.2} cells, shift {:+.4} % from Mindlin; \
          one real FFT pair of {mx}x{my} {:.1} ms on 2 threads, {:.1} ms on one: the solve is {:.0} / {:.0} pairs",
         sol.info.fft_size,
         1e3 * product,
         1e3 * prec_time,
+        1e3 * prec32,
         sol.info.levels,
         sol.info.coarse_seconds,
         sol.info.iterations,

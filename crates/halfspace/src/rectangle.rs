@@ -188,14 +188,20 @@ fn far_order(d_over_h: f64) -> usize {
 
 /// The kernel integrals by a Gauss–Legendre product rule (order from [`far_order`]) when the
 /// field point is farther than [`FAR_FIELD`] element sizes from the element centre; `None`
-/// otherwise. `1/rho` is always summed; `XX` adds $X^2/\rho^3$ and `ALL` every kernel (the
-/// others are left at 0).
+/// otherwise. `1/rho` is always summed; `XX` adds $X^2/\rho^3$, `ALL` the other $1/\rho^3$
+/// kernels and `LOG` the two $1/\rho^2$ kernels of the normal coupling (what is not summed is
+/// left at 0; each kernel has its own accumulator, so leaving some out does not change the
+/// others by a bit).
 ///
 /// Every kernel is homogeneous in $(X, Y)$: with $s = 1/d$ the scaled offsets $sX, sY$ are
 /// $O(1)$, and $1/\rho$, $X^2/\rho^3$, $Y^2/\rho^3$, $XY/\rho^3$ carry one factor $s$ while
 /// $X/\rho^2$, $Y/\rho^2$ do too; nothing overflows or underflows early.
 #[inline]
-fn far_field<const XX: bool, const ALL: bool>(r: &Rect, x: f64, y: f64) -> Option<KernelIntegrals> {
+fn far_field<const XX: bool, const ALL: bool, const LOG: bool>(
+    r: &Rect,
+    x: f64,
+    y: f64,
+) -> Option<KernelIntegrals> {
     let (hx, hy) = (r.x2 - r.x1, r.y2 - r.y1);
     let (cx, cy) = (0.5 * (r.x1 + r.x2), 0.5 * (r.y1 + r.y2));
     let (dx, dy) = (x - cx, y - cy);
@@ -224,8 +230,10 @@ fn far_field<const XX: bool, const ALL: bool>(r: &Rect, x: f64, y: f64) -> Optio
                 if ALL {
                     k.yy_r3 += wij * b * b * inv_r3;
                     k.xy_r3 += wij * a * b * inv_r3;
-                    k.x_r2 += wij * a / rho2;
-                    k.y_r2 += wij * b / rho2;
+                    if LOG {
+                        k.x_r2 += wij * a / rho2;
+                        k.y_r2 += wij * b / rho2;
+                    }
                 }
             }
         }
@@ -248,7 +256,7 @@ fn far_field<const XX: bool, const ALL: bool>(r: &Rect, x: f64, y: f64) -> Optio
 #[inline]
 #[must_use]
 pub fn inv_r_integral(r: &Rect, x: f64, y: f64) -> f64 {
-    if let Some(k) = far_field::<false, false>(r, x, y) {
+    if let Some(k) = far_field::<false, false, false>(r, x, y) {
         return k.inv_r;
     }
     let mut s = 0.0;
@@ -267,7 +275,14 @@ pub fn inv_r_integral(r: &Rect, x: f64, y: f64) -> f64 {
 #[inline]
 #[must_use]
 pub fn kernel_integrals(r: &Rect, x: f64, y: f64) -> KernelIntegrals {
-    if let Some(k) = far_field::<true, true>(r, x, y) {
+    integrals::<true>(r, x, y)
+}
+
+/// [`kernel_integrals`], with the two $1/\rho^2$ kernels (`x_r2`, `y_r2`) only when `LOG`
+/// (left at 0 otherwise; the others are the same to the bit either way).
+#[inline(always)]
+fn integrals<const LOG: bool>(r: &Rect, x: f64, y: f64) -> KernelIntegrals {
+    if let Some(k) = far_field::<true, true, LOG>(r, x, y) {
         return k;
     }
     let mut k = KernelIntegrals::default();
@@ -276,13 +291,15 @@ pub fn kernel_integrals(r: &Rect, x: f64, y: f64) -> KernelIntegrals {
         let rho = (a * a + b * b).sqrt();
         let fa = a_asinh(a, b, rho); // kernel Y^2/rho^3
         let fb = a_asinh(b, a, rho); // kernel X^2/rho^3
-        let ln_rho = if rho > 0.0 { rho.ln() } else { 0.0 };
         k.inv_r += sign * (fa + fb);
         k.xx_r3 += sign * fb;
         k.yy_r3 += sign * fa;
         k.xy_r3 -= sign * rho;
-        k.x_r2 += sign * log_atan(a, b, ln_rho);
-        k.y_r2 += sign * log_atan(b, a, ln_rho);
+        if LOG {
+            let ln_rho = if rho > 0.0 { rho.ln() } else { 0.0 };
+            k.x_r2 += sign * log_atan(a, b, ln_rho);
+            k.y_r2 += sign * log_atan(b, a, ln_rho);
+        }
     }
     if l != 1.0 {
         k.inv_r *= l;
@@ -352,7 +369,7 @@ pub fn shear_x_displacement(c: &Compliance, r: &Rect, x: f64, y: f64) -> Displac
 #[inline]
 #[must_use]
 pub fn shear_x_ux(c: &Compliance, r: &Rect, x: f64, y: f64) -> f64 {
-    if let Some(k) = far_field::<true, false>(r, x, y) {
+    if let Some(k) = far_field::<true, false, false>(r, x, y) {
         return (c.one_minus_nu * k.inv_r + c.nu * k.xx_r3) / (2.0 * PI);
     }
     let mut s1 = 0.0;
@@ -383,6 +400,25 @@ pub fn shear_y_displacement(c: &Compliance, r: &Rect, x: f64, y: f64) -> Displac
         y: f * (c.one_minus_nu * k.inv_r + c.nu * k.yy_r3),
         z: 0.5 * f * c.one_minus_two_nu * k.y_r2,
     }
+}
+
+/// The in-plane displacements due to unit uniform shear along $+x$ and along $+y$ on the
+/// rectangle, from one evaluation of the kernel integrals: `[ux(τx), uy(τx), uy(τy)]`, where
+/// $u_y(\tau_x) = u_x(\tau_y) = \frac{c_2}{2\pi}\iint XY/\rho^3$ (Cerruti integrated over
+/// the rectangle; FORMULAS.md F, element-to-point formula). The same values, to the bit, as
+/// the in-plane components of [`shear_x_displacement`] and [`shear_y_displacement`], at half
+/// their cost or less (the kernels of the normal coupling are not formed): the tangential
+/// influence coefficients of a lattice are this at every offset.
+#[inline]
+#[must_use]
+pub fn shear_in_plane(c: &Compliance, r: &Rect, x: f64, y: f64) -> [f64; 3] {
+    let k = integrals::<false>(r, x, y);
+    let f = 1.0 / (2.0 * PI);
+    [
+        f * (c.one_minus_nu * k.inv_r + c.nu * k.xx_r3),
+        f * c.nu * k.xy_r3,
+        f * (c.one_minus_nu * k.inv_r + c.nu * k.yy_r3),
+    ]
 }
 
 /// Centre self-term of a rectangle of half-sides $c_x$ (along the shear) and $c_y$, per unit

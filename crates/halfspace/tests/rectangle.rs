@@ -9,8 +9,8 @@ use std::time::Instant;
 use stickslip_halfspace::material::Compliance;
 use stickslip_halfspace::point_load::{boussinesq_displacement, cerruti_displacement};
 use stickslip_halfspace::rectangle::{
-    kernel_integrals, pressure_displacement, pressure_uz, shear_self_term, shear_x_displacement,
-    shear_x_ux, shear_y_displacement, Rect,
+    kernel_integrals, pressure_displacement, pressure_uz, shear_in_plane, shear_self_term,
+    shear_x_displacement, shear_x_ux, shear_y_displacement, Rect,
 };
 use stickslip_halfspace::{Displacement3, Material};
 
@@ -116,6 +116,27 @@ fn fast_paths_match_full() {
     }
     // different summation order; the corner sum cancels to ~eps (d/h)^2 ~ 5e-13 at "far 40"
     st.check(1e-12);
+}
+
+/// The tangential coefficients of a lattice come from `shear_in_plane`, which evaluates the
+/// kernel integrals once for both shear directions and leaves out the normal-coupling
+/// kernels: the same arithmetic on each kept kernel, so the same values to the bit as the full
+/// displacement vectors (which the quadrature tests above check), near (corner sums) and far
+/// (each order of the Gauss rule).
+#[test]
+fn in_plane_pair_is_the_full_vectors_to_the_bit() {
+    let c = mat().compliance();
+    let r = Rect::new(-0.5, 0.5, -0.25, 0.75).unwrap();
+    let far = [(3.0, 2.5), (7.0, -1.0), (-30.0, 55.0), (150.0, 0.0), (-900.0, 420.0), (3e4, 2e4)];
+    let points = POINTS.iter().map(|&(x, y, _)| (x, y)).chain(far);
+    for (x, y) in points {
+        let [uxx, uyx, uyy] = shear_in_plane(&c, &r, x, y);
+        let (sx, sy) = (shear_x_displacement(&c, &r, x, y), shear_y_displacement(&c, &r, x, y));
+        assert_eq!(uxx.to_bits(), sx.x.to_bits(), "ux under x-shear at ({x}, {y})");
+        assert_eq!(uyx.to_bits(), sx.y.to_bits(), "uy under x-shear at ({x}, {y})");
+        assert_eq!(uyx.to_bits(), sy.x.to_bits(), "ux under y-shear at ({x}, {y})");
+        assert_eq!(uyy.to_bits(), sy.y.to_bits(), "uy under y-shear at ({x}, {y})");
+    }
 }
 
 #[test]

@@ -13,7 +13,7 @@
 use crate::grid::ContactGrid;
 use std::f64::consts::PI;
 pub use stickslip_halfspace::rectangle::Compliance;
-use stickslip_halfspace::rectangle::{shear_x_displacement, shear_y_displacement, Rect};
+use stickslip_halfspace::rectangle::{shear_in_plane, Rect};
 
 /// How the element-to-element coefficients are computed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -58,9 +58,10 @@ pub fn tensor(
     }
     // Source rectangle centred at the origin, field point at the offset.
     let rect = Rect { x1: -0.5 * hx, x2: 0.5 * hx, y1: -0.5 * hy, y2: 0.5 * hy };
-    let ux = shear_x_displacement(c, &rect, dx, dy);
-    let uy = shear_y_displacement(c, &rect, dx, dy);
-    [ux.x / area, 0.5 * (ux.y + uy.x) / area, uy.y / area]
+    // One pass of the kernel integrals for both shear directions (u_y under x-shear and u_x
+    // under y-shear are the same integral).
+    let [uxx, uxy, uyy] = shear_in_plane(c, &rect, dx, dy);
+    [uxx / area, uxy / area, uyy / area]
 }
 
 /// Dense $N\times N$ matrix $A_{kj} = t_k\cdot U_{kj}\cdot t_j$ (row-major), with `dirs[k]`

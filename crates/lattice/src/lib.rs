@@ -39,7 +39,7 @@ pub use grid::{ContactGrid, GridPatch, PatchPressure, Shape};
 pub use influence::{Compliance, InfluenceModel};
 pub use operator::{
     even_quadrant, fast_size, ConvScratch, CrossOperator, NormalOperator, NormalScratch,
-    PeriodicLattice, Precision, ScalarConvolution, ScalarScratch, TensorConvolution,
+    PeriodicLattice, Precision, ScalarConvolution, ScalarScratch, TensorConvolution, TensorKernel,
 };
 pub use stickslip_quad::Tolerance;
 

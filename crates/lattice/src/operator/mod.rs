@@ -11,8 +11,14 @@
 //! (the standard aperiodic FFT convolution, e.g. Liu, Wang & Liu 2000, *Wear* 243, "DC-FFT").
 //!
 //! $K_{xx}$, $K_{yy}$ are even in both offsets and $K_{xy}$ is odd in both, so all three
-//! spectra are real; only their real parts are stored. One product costs two forward and two
-//! inverse real 2D FFTs of size $M_x\times M_y$: $O(N\log N)$.
+//! spectra are real (even, and odd in both frequencies, respectively) and are computed from
+//! the quadrant of offsets alone: real transforms of the mirrored rows and columns, no padded
+//! lattice formed. One product costs two forward and two inverse real 2D FFTs of size
+//! $M_x\times M_y$: $O(N\log N)$.
+//!
+//! The transforms run in double precision (`TensorConvolution`, the operator) or single
+//! (`TensorConvolution<f32>`, for a preconditioner, which only has to be a fixed symmetric
+//! positive definite operator); the interface is in double precision either way.
 
 use crate::error::Result;
 use crate::grid::ContactGrid;
@@ -31,8 +37,58 @@ mod scalar;
 pub use cross::CrossOperator;
 pub use normal::{NormalOperator, NormalScratch};
 pub use scalar::{even_quadrant, Precision, ScalarConvolution, ScalarScratch};
+use sealed::{Buffers, Tensor};
 
 type C64 = Complex<f64>;
+
+/// The precisions [`TensorConvolution`] runs in, each with its work arrays in
+/// [`ConvScratch`] (a trait of this crate only: `f64` and `f32`).
+mod sealed {
+    use super::{Complex, ConvScratch, Precision};
+
+    /// The work arrays of one product in precision `T`: the lattice values and the row spectra
+    /// of the two components.
+    #[derive(Debug, Clone, Default)]
+    pub struct Buffers<T> {
+        pub lat: [Vec<T>; 2],
+        pub rowspec: [Vec<Complex<T>>; 2],
+    }
+
+    impl<T: Precision> Buffers<T> {
+        /// Buffers of at least `lat` lattice values and `spec` row-spectrum values each.
+        pub fn ensure(&mut self, lat: usize, spec: usize) {
+            let z = Complex::new(T::of(0.0), T::of(0.0));
+            for v in &mut self.lat {
+                if v.len() < lat {
+                    v.resize(lat, T::of(0.0));
+                }
+            }
+            for v in &mut self.rowspec {
+                if v.len() < spec {
+                    v.resize(spec, z);
+                }
+            }
+        }
+    }
+
+    /// A precision of the transforms and where its buffers live in a [`ConvScratch`].
+    pub trait Tensor: Precision {
+        /// This precision's buffers.
+        fn buffers(s: &mut ConvScratch) -> &mut Buffers<Self>;
+    }
+
+    impl Tensor for f64 {
+        fn buffers(s: &mut ConvScratch) -> &mut Buffers<f64> {
+            &mut s.double
+        }
+    }
+
+    impl Tensor for f32 {
+        fn buffers(s: &mut ConvScratch) -> &mut Buffers<f32> {
+            &mut s.single
+        }
+    }
+}
 
 /// Columns (forward) or rows (inverse) handled together by one task of the 2D FFTs: the
 /// transposes between the row and column passes then move whole cache lines.
@@ -77,13 +133,14 @@ pub fn fast_size(n: usize) -> usize {
     }
 }
 
-/// The planned convolution operator $\mathbf u = K * \mathbf q$ of one contact grid.
+/// The planned convolution operator $\mathbf u = K * \mathbf q$ of one contact grid, its
+/// transforms in precision `T` (`f64`, or `f32` for a preconditioner).
 ///
 /// Built once per grid and pair of bodies ([`TensorConvolution::new`]); owns the FFT plans and
 /// the three kernel spectra. [`TensorConvolution::apply`] takes caller-owned scratch
 /// ([`TensorConvolution::make_scratch`]) and allocates only the few-kilobyte per-thread FFT
 /// work buffers of the rayon tasks.
-pub struct TensorConvolution {
+pub struct TensorConvolution<T: Tensor = f64> {
     n: usize,
     nx: usize,
     ny: usize,
@@ -97,32 +154,36 @@ pub struct TensorConvolution {
     row_items: Vec<(usize, usize)>,
     row_ptr: Vec<usize>,
     /// Real spectra of $K_{xx}, K_{xy}, K_{yy}$, layout `[i * my + j]`, $i < M_x/2+1$.
-    kxx: Vec<f64>,
-    kxy: Vec<f64>,
-    kyy: Vec<f64>,
+    kxx: Vec<T>,
+    kxy: Vec<T>,
+    kyy: Vec<T>,
     /// Kernel at zero offset, `[Kxx, Kxy, Kyy]` (per unit traction).
     self_term: [f64; 3],
-    r2c: Arc<dyn RealToComplex<f64>>,
-    c2r: Arc<dyn ComplexToReal<f64>>,
-    col_fwd: Arc<dyn Fft<f64>>,
-    col_inv: Arc<dyn Fft<f64>>,
+    r2c: Arc<dyn RealToComplex<T>>,
+    c2r: Arc<dyn ComplexToReal<T>>,
+    col_fwd: Arc<dyn Fft<T>>,
+    col_inv: Arc<dyn Fft<T>>,
 }
 
-impl std::fmt::Debug for TensorConvolution {
+impl<T: Tensor> std::fmt::Debug for TensorConvolution<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("TensorConvolution")
             .field("elements", &self.n)
             .field("lattice", &(self.nx, self.ny))
             .field("fft", &(self.mx, self.my))
+            .field("precision", &std::any::type_name::<T>())
             .finish_non_exhaustive()
     }
 }
 
-/// Caller-owned work space of [`TensorConvolution::apply`].
-#[derive(Debug, Clone)]
+/// Caller-owned work space of [`TensorConvolution::apply`], in either precision: an
+/// operator's [`TensorConvolution::make_scratch`] sizes its own precision's arrays, and an
+/// operator of the other precision (or a larger lattice) that is handed it adds or grows its
+/// own on first use, so that an operator and its preconditioner can share one.
+#[derive(Debug, Clone, Default)]
 pub struct ConvScratch {
-    lat: [Vec<f64>; 2],
-    rowspec: [Vec<C64>; 2],
+    double: Buffers<f64>,
+    single: Buffers<f32>,
 }
 
 impl TensorConvolution {
@@ -141,76 +202,208 @@ impl TensorConvolution {
         let (nx, ny, _, _, cell) = grid.lattice_cells()?;
         let mx = fast_size(2 * nx - 1);
         let my = fast_size(2 * ny - 1);
-        let mxh = mx / 2 + 1;
         let mut op = Self::on_cells(nx, ny, mx, my, cell);
-
-        // Kernel tensors for offsets (di, dj) >= 0, from a two-element probe grid
-        // (field at the offset, source at the origin), times the element area.
-        let area = grid.element_area();
-        let (hx, hy) = (grid.hx, grid.hy);
-        let quad: Vec<[f64; 3]> = (0..ny)
-            .into_par_iter()
-            .flat_map_iter(|dj| {
-                let mut probe = ContactGrid {
-                    hx,
-                    hy,
-                    x: vec![0.0, 0.0],
-                    y: vec![dj as f64 * hy, 0.0],
-                    pressure: vec![0.0, 0.0],
-                    patch: vec![0, 0],
-                };
-                (0..nx)
-                    .map(|di| {
-                        probe.x[0] = di as f64 * hx;
-                        let (k, j) = if di == 0 && dj == 0 { (1, 1) } else { (0, 1) };
-                        let t = tensor(&probe, c, model, k, j);
-                        [t[0] * area, t[1] * area, t[2] * area]
-                    })
-                    .collect::<Vec<_>>()
-            })
-            .collect();
+        let quad = kernel_quadrant(grid, c, model, nx, ny);
         op.self_term = quad[0];
-        let mut spectra: [Vec<f64>; 3] = [vec![], vec![], vec![]];
-        for (comp, out) in spectra.iter_mut().enumerate() {
-            // Parity: xx, yy even in both offsets; xy odd in both.
-            let odd = comp == 1;
-            let mut lat = vec![0.0; mx * my];
-            for dj in 0..ny {
-                for di in 0..nx {
-                    let v = quad[dj * nx + di][comp];
-                    for (sj, ej) in [(1.0, dj), (-1.0, (my - dj) % my)] {
-                        for (si, ei) in [(1.0, di), (-1.0, (mx - di) % mx)] {
-                            let s = if odd { si * sj } else { 1.0 };
-                            lat[ej * mx + ei] = s * v;
-                        }
-                    }
-                }
-            }
-            // Odd kernel: the zero-offset row and column are zero (the mirror writes of
-            // di = 0 or dj = 0 overwrite with -v = -0 there; keep them exactly 0).
-            if odd {
-                lat[..mx].fill(0.0);
-                for dj in 0..my {
-                    lat[dj * mx] = 0.0;
-                }
-            }
-            let mut rowspec = vec![C64::new(0.0, 0.0); my * mxh];
-            let mut spec = vec![C64::new(0.0, 0.0); mxh * my];
-            op.forward(
-                my,
-                |j, row| row.copy_from_slice(&lat[j * mx..(j + 1) * mx]),
-                &mut rowspec,
-                &mut spec,
-            );
-            *out = spec.iter().map(|z| z.re).collect();
-        }
-        let [kxx, kxy, kyy] = spectra;
-        op.kxx = kxx;
-        op.kxy = kxy;
-        op.kyy = kyy;
+        [op.kxx, op.kxy, op.kyy] = padded_spectra(nx, ny, mx, my, &quad);
         Ok(op)
     }
 
+    /// The kernel of [`TensorConvolution::new`] for `grid` (its offsets in one quadrant), to
+    /// plan the operators of this grid and of its coarsened lattices from
+    /// ([`TensorConvolution::from_kernel`]) without evaluating the influence coefficients
+    /// again.
+    ///
+    /// # Errors
+    /// As [`TensorConvolution::new`].
+    pub fn kernel(
+        grid: &ContactGrid,
+        c: &Compliance,
+        model: InfluenceModel,
+    ) -> Result<TensorKernel> {
+        let (nx, ny, _, _, _) = grid.lattice_cells()?;
+        let values = kernel_quadrant(grid, c, model, nx, ny);
+        Ok(TensorKernel { h: (grid.hx, grid.hy), cells: (nx, ny), values })
+    }
+
+    /// The operator of `grid` from the kernel of the same bodies and model on a lattice whose
+    /// cells are $2^k$ ($k \ge 0$) times smaller and which spans at least as many cells
+    /// (the grid itself, or the finer lattice `grid` was coarsened from,
+    /// [`ContactGrid::coarsened`]). The influence coefficients of the uniform-rectangle
+    /// tensor (and of the point-load model) are homogeneous of degree 1 in the cell size at
+    /// a fixed offset in cells, and scaling by a power of two is exact in floating point at
+    /// every step of their evaluation, so the operator is the one [`TensorConvolution::new`]
+    /// plans, to the bit, at the cost of the transforms alone. The bodies and model are the
+    /// caller's to keep the same.
+    ///
+    /// # Errors
+    /// As [`TensorConvolution::new`]; [`crate::Error::OutOfDomain`] if the cell sizes are not
+    /// the kernel's times one power of two, or the lattice spans more cells than the
+    /// kernel's.
+    pub fn from_kernel(grid: &ContactGrid, kernel: &TensorKernel) -> Result<Self> {
+        let (nx, ny, _, _, cell) = grid.lattice_cells()?;
+        let scale = grid.hx / kernel.h.0;
+        let k = scale.log2().round();
+        let power = k >= 0.0 && scale == 2f64.powi(k as i32) && grid.hy == scale * kernel.h.1;
+        if !power {
+            return Err(crate::Error::OutOfDomain {
+                name: "cell size over the kernel's cell size",
+                value: scale,
+                allowed: "a power of two >= 1, the same along x and y",
+            });
+        }
+        if nx > kernel.cells.0 || ny > kernel.cells.1 {
+            return Err(crate::Error::OutOfDomain {
+                name: "lattice cells beyond the kernel's",
+                value: nx.saturating_sub(kernel.cells.0).max(ny.saturating_sub(kernel.cells.1))
+                    as f64,
+                allowed: "0: a lattice within the kernel's",
+            });
+        }
+        let (mx, my) = (fast_size(2 * nx - 1), fast_size(2 * ny - 1));
+        let mut op = Self::on_cells(nx, ny, mx, my, cell);
+        let kx = kernel.cells.0;
+        let mut quad = vec![[0.0; 3]; nx * ny];
+        quad.par_chunks_mut(nx).enumerate().for_each(|(dj, row)| {
+            for (o, v) in row.iter_mut().zip(&kernel.values[dj * kx..dj * kx + nx]) {
+                *o = v.map(|t| scale * t);
+            }
+        });
+        op.self_term = quad[0];
+        [op.kxx, op.kxy, op.kyy] = padded_spectra(nx, ny, mx, my, &quad);
+        Ok(op)
+    }
+}
+
+/// The influence coefficients of a lattice's tangential operator for the offsets of one
+/// quadrant ([`TensorConvolution::kernel`]), from which [`TensorConvolution::from_kernel`]
+/// plans the operators of this lattice and of its coarsened lattices.
+#[derive(Debug, Clone)]
+pub struct TensorKernel {
+    /// Cell size $(h_x, h_y)$.
+    h: (f64, f64),
+    /// Offsets $(n_x, n_y)$ held: $0\le d_i<n_x$, $0\le d_j<n_y$.
+    cells: (usize, usize),
+    /// $K(d_i, d_j)$ per unit traction, `[dj * nx + di]`, as `[Kxx, Kxy, Kyy]`.
+    values: Vec<[f64; 3]>,
+}
+
+/// The kernel tensors $K(d_i, d_j)$ of `grid`'s lattice for the offsets $0\le d_i<n_x$,
+/// $0\le d_j<n_y$ (row-major `[dj * nx + di]`, per unit traction): [`tensor`] times the
+/// element area, from a two-element probe grid (field at the offset, source at the origin),
+/// rows in parallel. The other quadrants follow by parity.
+fn kernel_quadrant(
+    grid: &ContactGrid,
+    c: &Compliance,
+    model: InfluenceModel,
+    nx: usize,
+    ny: usize,
+) -> Vec<[f64; 3]> {
+    let area = grid.element_area();
+    let (hx, hy) = (grid.hx, grid.hy);
+    let mut quad = vec![[0.0; 3]; nx * ny];
+    quad.par_chunks_mut(nx).enumerate().for_each(|(dj, out)| {
+        let mut probe = ContactGrid {
+            hx,
+            hy,
+            x: vec![0.0, 0.0],
+            y: vec![dj as f64 * hy, 0.0],
+            pressure: vec![0.0, 0.0],
+            patch: vec![0, 0],
+        };
+        for (di, o) in out.iter_mut().enumerate() {
+            probe.x[0] = di as f64 * hx;
+            let (k, j) = if di == 0 && dj == 0 { (1, 1) } else { (0, 1) };
+            let t = tensor(&probe, c, model, k, j);
+            *o = [t[0] * area, t[1] * area, t[2] * area];
+        }
+    });
+    quad
+}
+
+/// `out` (length $M$) = the sequence of the offsets `half(d)`, $0\le d<n$, on a circle of
+/// $M \ge 2n - 1$, continued evenly (`out[M - d] = half(d)`) or, when `odd`, oddly
+/// (`out[M - d] = -half(d)`, `out[0] = 0`); zero between.
+fn mirror(n: usize, half: impl Fn(usize) -> f64, odd: bool, out: &mut [f64]) {
+    let m = out.len();
+    out.fill(0.0);
+    out[0] = if odd { 0.0 } else { half(0) };
+    for d in 1..n {
+        let v = half(d);
+        out[d] = v;
+        out[m - d] = if odd { -v } else { v };
+    }
+}
+
+/// The real spectra of $K_{xx}$, $K_{xy}$, $K_{yy}$ on the $M_x\times M_y$ torus from the
+/// quadrant `quad` ([`kernel_quadrant`]), layout `[i * my + j]` for $i\le M_x/2$, every $j$.
+///
+/// The padded kernel is even in both offsets ($K_{xx}$, $K_{yy}$) or odd in both ($K_{xy}$,
+/// with zero row and column at offset 0), so its 2D transform is separable into real
+/// transforms of the mirrored quadrant rows (only $n_y$ of the $M_y$ rows: the others are
+/// their mirror images or zero) and then of the mirrored columns of the result. An even
+/// sequence has a real transform and an odd one an imaginary transform, so the spectrum is
+/// $\operatorname{Re}\mathcal F_y[\operatorname{Re}\mathcal F_x K]$ for the even components
+/// and $-\operatorname{Im}\mathcal F_y[\operatorname{Im}\mathcal F_x K]$ for $K_{xy}$, even or
+/// odd in the column frequency as the kernel is in $d_j$. In double precision; a quarter of
+/// the transform work of the full padded lattice's 2D FFT, and no padded lattice in memory.
+fn padded_spectra(nx: usize, ny: usize, mx: usize, my: usize, quad: &[[f64; 3]]) -> [Vec<f64>; 3] {
+    let (mxh, myh) = (mx / 2 + 1, my / 2 + 1);
+    let (row_r2c, col_r2c) = (plans::r2c::<f64>(mx), plans::r2c::<f64>(my));
+    let z = C64::new(0.0, 0.0);
+    // Row transforms: rows[comp][dj * mxh + i].
+    let mut rows = [vec![0.0; ny * mxh], vec![0.0; ny * mxh], vec![0.0; ny * mxh]];
+    {
+        let [r0, r1, r2] = &mut rows;
+        r0.par_chunks_mut(mxh)
+            .zip(r1.par_chunks_mut(mxh))
+            .zip(r2.par_chunks_mut(mxh))
+            .enumerate()
+            .for_each_init(
+                || (vec![0.0; mx], vec![z; mxh], row_r2c.make_scratch_vec()),
+                |(row, out, scr), (dj, ((d0, d1), d2))| {
+                    for (comp, dst) in [d0, d1, d2].into_iter().enumerate() {
+                        let odd = comp == 1;
+                        mirror(nx, |di| quad[dj * nx + di][comp], odd, row);
+                        // Lengths are consistent by construction; realfft only errs on length.
+                        let _ = row_r2c.process_with_scratch(row, out, scr);
+                        for (d, o) in dst.iter_mut().zip(out.iter()) {
+                            *d = if odd { o.im } else { o.re };
+                        }
+                    }
+                },
+            );
+    }
+    // Column transforms, one row frequency i at a time: spec[comp][i * my + j].
+    let mut spec = [vec![0.0; mxh * my], vec![0.0; mxh * my], vec![0.0; mxh * my]];
+    {
+        let [s0, s1, s2] = &mut spec;
+        s0.par_chunks_mut(my)
+            .zip(s1.par_chunks_mut(my))
+            .zip(s2.par_chunks_mut(my))
+            .enumerate()
+            .for_each_init(
+                || (vec![0.0; my], vec![z; myh], col_r2c.make_scratch_vec()),
+                |(col, out, scr), (i, ((d0, d1), d2))| {
+                    for (comp, dst) in [d0, d1, d2].into_iter().enumerate() {
+                        let odd = comp == 1;
+                        mirror(ny, |dj| rows[comp][dj * mxh + i], odd, col);
+                        let _ = col_r2c.process_with_scratch(col, out, scr);
+                        for (t, o) in out.iter().enumerate() {
+                            let v = if odd { -o.im } else { o.re };
+                            dst[t] = v;
+                            if t > 0 && my - t != t {
+                                dst[my - t] = if odd { -v } else { v };
+                            }
+                        }
+                    }
+                },
+            );
+    }
+    spec
+}
+
+impl<T: Tensor> TensorConvolution<T> {
     /// Number of elements $N$.
     #[must_use]
     pub fn len(&self) -> usize {
@@ -242,57 +435,13 @@ impl TensorConvolution {
         self.self_term
     }
 
-    /// Work space for [`TensorConvolution::apply`].
+    /// Work space for [`TensorConvolution::apply`] (this precision's arrays sized for this
+    /// operator).
     #[must_use]
     pub fn make_scratch(&self) -> ConvScratch {
-        let z = C64::new(0.0, 0.0);
-        ConvScratch {
-            lat: [vec![0.0; self.nx * self.ny], vec![0.0; self.nx * self.ny]],
-            rowspec: [vec![z; self.ny * self.mxh], vec![z; self.ny * self.mxh]],
-        }
-    }
-
-    /// Row FFTs of `rows` real rows (the rest are zero), then column FFTs:
-    /// `spec[i * my + j]` is the 2D spectrum.
-    fn forward(
-        &self,
-        rows: usize,
-        fill: impl Fn(usize, &mut [f64]) + Sync,
-        rowspec: &mut [C64],
-        spec: &mut [C64],
-    ) {
-        let (mx, my, mxh) = (self.mx, self.my, self.mxh);
-        rowspec[..rows * mxh].par_chunks_mut(mxh).enumerate().for_each_init(
-            || (vec![0.0; mx], self.r2c.make_scratch_vec()),
-            |(row, scr), (j, out)| {
-                row.fill(0.0);
-                fill(j, row);
-                // Lengths are consistent by construction; realfft only errs on length.
-                let _ = self.r2c.process_with_scratch(row, out, scr);
-            },
-        );
-        // Columns in blocks of BLOCK: each row contributes BLOCK adjacent values per block,
-        // so the transpose reads whole cache lines instead of one value per row.
-        let rowspec: &[C64] = rowspec;
-        spec.par_chunks_mut(BLOCK * my).enumerate().for_each_init(
-            || vec![C64::new(0.0, 0.0); self.col_fwd.get_inplace_scratch_len()],
-            |scr, (ib, cols)| {
-                let i0 = ib * BLOCK;
-                let nb = cols.len() / my;
-                for j in 0..rows {
-                    let src = &rowspec[j * mxh + i0..j * mxh + i0 + nb];
-                    for (b, v) in src.iter().enumerate() {
-                        cols[b * my + j] = *v;
-                    }
-                }
-                for b in 0..nb {
-                    cols[b * my + rows..(b + 1) * my].fill(C64::new(0.0, 0.0));
-                }
-                for col in cols.chunks_exact_mut(my) {
-                    self.col_fwd.process_with_scratch(col, scr);
-                }
-            },
-        );
+        let mut s = ConvScratch::default();
+        T::buffers(&mut s).ensure(self.nx * self.ny, self.ny * self.mxh);
+        s
     }
 
     /// The fused column pass of a product, in place: for each block of columns of the row
@@ -301,16 +450,16 @@ impl TensorConvolution {
     /// inverse column FFTs, the first $n_y$ entries of each column written back where they
     /// were read. A block stays in cache from the forward to the inverse transform, so the
     /// padded spectrum never goes to memory, and the row spectra are the only work array.
-    fn columns(&self, rows: &mut [&mut [C64]]) {
+    fn columns(&self, rows: &mut [&mut [Complex<T>]]) {
         let (my, mxh, ny) = (self.my, self.mxh, self.ny);
         // Column stride in the block buffer: padded off a power of two so that the BLOCK
         // columns written row by row do not all map to the same cache sets.
         let ms = my + 8;
         let nc = rows.len();
-        let z = C64::new(0.0, 0.0);
+        let z = Complex::new(T::of(0.0), T::of(0.0));
         // Each task owns one block of BLOCK columns: the row segments of that block, of every
         // row and component (components one after the other), as disjoint slices.
-        let mut blocks: Vec<Vec<&mut [C64]>> =
+        let mut blocks: Vec<Vec<&mut [Complex<T>]>> =
             (0..mxh.div_ceil(BLOCK)).map(|_| Vec::with_capacity(nc * ny)).collect();
         for r in rows.iter_mut() {
             for row in r[..ny * mxh].chunks_exact_mut(mxh) {
@@ -373,25 +522,26 @@ impl TensorConvolution {
     /// Inverse row FFTs of the row spectra `rowspec` (row-major $n_y\times(M_x/2+1)$, as left
     /// by [`TensorConvolution::columns`]; overwritten) into `lat` (row-major
     /// $n_y\times n_x$), scaled by $1/(M_xM_y)$.
-    fn rows_inverse(&self, rowspec: &mut [C64], lat: &mut [f64]) {
+    fn rows_inverse(&self, rowspec: &mut [Complex<T>], lat: &mut [T]) {
         let (mx, my, mxh, nx, ny) = (self.mx, self.my, self.mxh, self.nx, self.ny);
-        let scale = 1.0 / (mx as f64 * my as f64);
+        let scale = T::of(1.0 / (mx as f64 * my as f64));
+        let zero = T::of(0.0);
         rowspec[..ny * mxh]
             .par_chunks_mut(BLOCK * mxh)
             .zip(lat.par_chunks_mut(BLOCK * nx))
             .for_each_init(
-                || (vec![0.0; mx], self.c2r.make_scratch_vec()),
+                || (vec![zero; mx], self.c2r.make_scratch_vec()),
                 |(row, scr), (rsb, outb)| {
                     for (rs, out) in rsb.chunks_exact_mut(mxh).zip(outb.chunks_exact_mut(nx)) {
                         // The DC and (even sizes) Nyquist bins of a real signal are real;
                         // clear the rounding.
-                        rs[0].im = 0.0;
+                        rs[0].im = zero;
                         if mx % 2 == 0 {
-                            rs[mxh - 1].im = 0.0;
+                            rs[mxh - 1].im = zero;
                         }
                         let _ = self.c2r.process_with_scratch(rs, row, scr);
                         for (o, r) in out.iter_mut().zip(row.iter()) {
-                            *o = r * scale;
+                            *o = *r * scale;
                         }
                     }
                 },
@@ -399,12 +549,13 @@ impl TensorConvolution {
     }
 
     /// Row FFTs of the $n_y$ lattice rows filled by `fill` into `rowspec`.
-    fn rows_forward(&self, fill: impl Fn(usize, &mut [f64]) + Sync, rowspec: &mut [C64]) {
+    fn rows_forward(&self, fill: impl Fn(usize, &mut [T]) + Sync, rowspec: &mut [Complex<T>]) {
         let (mx, mxh) = (self.mx, self.mxh);
+        let zero = T::of(0.0);
         rowspec[..self.ny * mxh].par_chunks_mut(mxh).enumerate().for_each_init(
-            || (vec![0.0; mx], self.r2c.make_scratch_vec()),
+            || (vec![zero; mx], self.r2c.make_scratch_vec()),
             |(row, scr), (j, out)| {
-                row.fill(0.0);
+                row.fill(zero);
                 fill(j, row);
                 // Lengths are consistent by construction; realfft only errs on length.
                 let _ = self.r2c.process_with_scratch(row, out, scr);
@@ -417,7 +568,8 @@ impl TensorConvolution {
     /// $$u_a(k) = \sum_j K_{ab}(\mathbf i_k - \mathbf i_j)\,q_b(j),$$
     /// with $K$ the uniform-rectangle tensor of FORMULAS.md F, computed as the zero-padded
     /// (aperiodic) FFT convolution on circular arrays of size $M \ge 2n-1$ per axis (Liu, Wang &
-    /// Liu 2000, *Wear* 243, DC-FFT).
+    /// Liu 2000, *Wear* 243, DC-FFT). The transforms run in precision `T` (the tractions are
+    /// rounded to it as they are read, the displacements widened as they are written).
     ///
     /// # Panics
     /// If a slice length differs from $N$.
@@ -431,11 +583,13 @@ impl TensorConvolution {
     ) {
         assert!(qx.len() == self.n && qy.len() == self.n, "traction length");
         assert!(ux.len() == self.n && uy.len() == self.n, "displacement length");
+        let s = T::buffers(s);
+        s.ensure(self.nx * self.ny, self.ny * self.mxh);
         for (f, q) in [qx, qy].into_iter().enumerate() {
             self.rows_forward(
                 |j, row| {
                     for &(i, k) in &self.row_items[self.row_ptr[j]..self.row_ptr[j + 1]] {
-                        row[i] = q[k];
+                        row[i] = T::of(q[k]);
                     }
                 },
                 &mut s.rowspec[f],
@@ -447,8 +601,8 @@ impl TensorConvolution {
         }
         for (f, u) in [ux, uy].into_iter().enumerate() {
             self.rows_inverse(&mut s.rowspec[f], &mut s.lat[f]);
-            let lat: &[f64] = &s.lat[f];
-            u.par_iter_mut().zip(self.cell.par_iter()).for_each(|(o, &c)| *o = lat[c]);
+            let lat: &[T] = &s.lat[f];
+            u.par_iter_mut().zip(self.cell.par_iter()).for_each(|(o, &c)| *o = lat[c].into());
         }
     }
 }
@@ -524,8 +678,11 @@ impl TensorConvolution {
         let b = c.nu;
         let (lx, ly) = (nx as f64 * grid.hx, ny as f64 * grid.hy);
         let two_pi = 2.0 * std::f64::consts::PI;
+        // Wave numbers per axis, formed once (the symbol is read at every (i, j)).
+        let kxs: Vec<f64> = (0..nx).map(|i| two_pi * signed(i, nx) / lx).collect();
+        let kys: Vec<f64> = (0..ny).map(|j| two_pi * signed(j, ny) / ly).collect();
         let sym = |i: usize, j: usize| -> [f64; 3] {
-            let (kx, ky) = (two_pi * signed(i, nx) / lx, two_pi * signed(j, ny) / ly);
+            let (kx, ky) = (kxs[i], kys[j]);
             let k = kx.hypot(ky);
             if k == 0.0 {
                 return [0.0; 3];
@@ -541,7 +698,7 @@ impl TensorConvolution {
     }
 }
 
-impl TensorConvolution {
+impl<T: Tensor> TensorConvolution<T> {
     /// A preconditioner for the tangential operator of `grid`: the inverse of the half-space's
     /// tangential transfer, $\hat{\mathbf u} = |\mathbf k|^{-1}\,(aI - b\,\hat{\mathbf k}
     /// \hat{\mathbf k}^{\mathsf T})\,\hat{\mathbf q}$ with $a = \sum 1/G_i$, $b = \sum\nu_i/G_i$
@@ -549,6 +706,14 @@ impl TensorConvolution {
     /// bounding box (5-smooth size, no padding), with the discrete wave number
     /// $2\sin(kh/2)/h$ per axis; the mean mode gets the smallest non-zero wave number, and
     /// the whole is scaled so that its diagonal equals $1/K_{xx}(0)$ (the Jacobi value).
+    ///
+    /// The symbol is formed in double precision and stored in precision `T`: in single
+    /// precision (`TensorConvolution::<f32>::inverse_symbol`) the transforms cost about half,
+    /// and the operator is still symmetric positive definite to the rounding of single
+    /// precision, which is all a preconditioner needs.
+    ///
+    /// # Errors
+    /// As [`ContactGrid::lattice_cells`].
     pub fn inverse_symbol(grid: &ContactGrid, c: &Compliance, k0xx: f64) -> Result<Self> {
         let (nx, ny, _, _, cell) = grid.lattice_cells()?;
         let (mx, my) = (fast_size(nx), fast_size(ny));
@@ -559,9 +724,13 @@ impl TensorConvolution {
         let (hx, hy) = (grid.hx, grid.hy);
         let two_pi = 2.0 * std::f64::consts::PI;
         let kmin = (two_pi / (mx as f64 * hx)).min(two_pi / (my as f64 * hy));
+        // The discrete wave numbers per axis, formed once (the symbol is read at every (i, j)).
+        let kxs: Vec<f64> =
+            (0..mx).map(|i| 2.0 * (0.5 * two_pi * signed(i, mx) / mx as f64).sin() / hx).collect();
+        let kys: Vec<f64> =
+            (0..my).map(|j| 2.0 * (0.5 * two_pi * signed(j, my) / my as f64).sin() / hy).collect();
         let sym = |i: usize, j: usize| -> [f64; 3] {
-            let kx = 2.0 * (0.5 * two_pi * signed(i, mx) / mx as f64).sin() / hx;
-            let ky = 2.0 * (0.5 * two_pi * signed(j, my) / my as f64).sin() / hy;
+            let (kx, ky) = (kxs[i], kys[j]);
             let k = kx.hypot(ky);
             if k == 0.0 {
                 return [kmin / a, 0.0, kmin / a];
@@ -600,16 +769,26 @@ impl TensorConvolution {
         sum.map(|v| v / (self.mx * self.my) as f64)
     }
 
-    /// Store `scale * sym(i, j)` as the kernel spectra (the half spectrum of the real FFT).
-    fn set_symbol(&mut self, scale: f64, sym: &impl Fn(usize, usize) -> [f64; 3]) {
+    /// Store `scale * sym(i, j)` as the kernel spectra (the half spectrum of the real FFT),
+    /// rounded to `T`.
+    fn set_symbol(&mut self, scale: f64, sym: &(impl Fn(usize, usize) -> [f64; 3] + Sync)) {
         let (mxh, my) = (self.mxh, self.my);
-        let mut k = [vec![0.0; mxh * my], vec![0.0; mxh * my], vec![0.0; mxh * my]];
-        for i in 0..mxh {
-            for j in 0..my {
-                for (kc, v) in k.iter_mut().zip(sym(i, j)) {
-                    kc[i * my + j] = scale * v;
-                }
-            }
+        let z = T::of(0.0);
+        let mut k = [vec![z; mxh * my], vec![z; mxh * my], vec![z; mxh * my]];
+        {
+            let [k0, k1, k2] = &mut k;
+            k0.par_chunks_mut(my)
+                .zip(k1.par_chunks_mut(my))
+                .zip(k2.par_chunks_mut(my))
+                .enumerate()
+                .for_each(|(i, ((c0, c1), c2))| {
+                    for j in 0..my {
+                        let [v0, v1, v2] = sym(i, j);
+                        c0[j] = T::of(scale * v0);
+                        c1[j] = T::of(scale * v1);
+                        c2[j] = T::of(scale * v2);
+                    }
+                });
         }
         [self.kxx, self.kxy, self.kyy] = k;
     }
@@ -644,7 +823,7 @@ fn rows_of(cell: &[usize], nx: usize, ny: usize) -> (Vec<(usize, usize)>, Vec<us
     (items, ptr)
 }
 
-impl TensorConvolution {
+impl<T: Tensor> TensorConvolution<T> {
     /// FFT plans for an `nx` x `ny` lattice on an `mx` x `my` torus (no elements, no kernel).
     fn plan(nx: usize, ny: usize, mx: usize, my: usize) -> Self {
         Self {

@@ -68,6 +68,11 @@
 //! [`NEST_MIN_CELLS`] across starts from its 2 x 2 coarsened lattice's solution (its stick
 //! and slip states and tractions), solved the same way to a looser residual; the fine
 //! lattice then needs about four Newton steps instead of ten or more, whatever its size.
+//! The influence coefficients are evaluated once, on the finest lattice
+//! ([`stickslip_lattice::TensorConvolution::kernel`]): a lattice coarsened $k$ times sees the
+//! same offsets in cells with cells $2^k$ times larger, and the coefficients are homogeneous
+//! of degree 1 in the cell size, so every level plans its operator from the finest kernel
+//! (`from_kernel`, the same operator to the bit).
 //! Callers solving load paths start from their previous solution with
 //! [`FastProblem::solve_from`] and [`WarmStart`].
 //!

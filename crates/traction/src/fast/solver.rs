@@ -9,7 +9,7 @@ use std::time::Instant;
 use stickslip_halfspace::Material;
 use stickslip_lattice::influence::{Compliance, InfluenceModel};
 use stickslip_lattice::ContactGrid;
-use stickslip_lattice::{ConvScratch, PeriodicLattice, TensorConvolution};
+use stickslip_lattice::{ConvScratch, PeriodicLattice, TensorConvolution, TensorKernel};
 use stickslip_quad::Tolerance;
 
 /// The fast solver's name, as in its errors.
@@ -441,15 +441,28 @@ impl<'a> FastProblem<'a> {
     }
 
     fn solve_here(&self) -> Result<FastSolution> {
+        self.solve_nested(None)
+    }
+
+    /// [`FastProblem::solve`] on a lattice of the nested start: `finer` is the kernel of the
+    /// finer lattice this one was coarsened from (None at the top).
+    fn solve_nested(&self, finer: Option<&TensorKernel>) -> Result<FastSolution> {
         // The coarse levels first, so that their memory is released before this lattice's
-        // operator is planned.
+        // operator is planned; the kernel's quadrant (3 doubles a cell of the lattice box)
+        // is computed before them, once, and every level plans its operator from it.
         let t1 = Instant::now();
-        let nested = self.coarse_start();
-        let coarse = t1.elapsed().as_secs_f64();
+        let Coarse { start: nested, kernel: own, kernel_seconds } = self.coarse_start(finer);
+        let coarse = t1.elapsed().as_secs_f64() - kernel_seconds;
         let t0 = Instant::now();
-        let op = self.operator()?;
+        let op = match finer.or(own.as_ref()) {
+            // The same operator as `operator()` to the bit (`from_kernel`), without the
+            // influence coefficients.
+            Some(k) => TensorConvolution::from_kernel(self.grid, k).or_else(|_| self.operator())?,
+            None => self.operator()?,
+        };
+        drop(own);
         let mut scratch = op.make_scratch();
-        let setup = t0.elapsed().as_secs_f64();
+        let setup = kernel_seconds + t0.elapsed().as_secs_f64();
         let t1 = Instant::now();
         let mut s = match &nested {
             Some((start, levels)) => match self.solve_from(&op, &mut scratch, start) {
@@ -469,13 +482,33 @@ impl<'a> FastProblem<'a> {
 
     /// The nested start of [`FastProblem::solve`]: the solution on the 2 x 2 coarsened
     /// lattice carried to this one (each element takes its coarse element's traction), and
-    /// the number of levels below; `None` when the lattice is too small, the directions are
-    /// fixed per element, or the coarse problem fails.
-    fn coarse_start(&self) -> Option<(WarmStart, usize)> {
+    /// the number of levels below; no start when the lattice is too small, the directions are
+    /// fixed per element, or the coarse problem fails. At the top level (`finer` None) the
+    /// kernel of this lattice is computed for the coarse levels and handed back for this one.
+    fn coarse_start(&self, finer: Option<&TensorKernel>) -> Coarse {
+        let mut out = Coarse { start: None, kernel: None, kernel_seconds: 0.0 };
         if matches!(self.directions, TractionDirections::Fixed(_)) || self.periodic.is_some() {
-            return None;
+            return out;
         }
-        let (coarse, parent) = self.grid.coarsened(NEST_MIN_CELLS)?;
+        let Some((coarse, parent)) = self.grid.coarsened(NEST_MIN_CELLS) else {
+            return out;
+        };
+        if finer.is_none() {
+            let t = Instant::now();
+            out.kernel = TensorConvolution::kernel(self.grid, &self.compliance(), self.model).ok();
+            out.kernel_seconds = t.elapsed().as_secs_f64();
+        }
+        out.start = self.coarse_solve(&coarse, &parent, finer.or(out.kernel.as_ref()));
+        out
+    }
+
+    /// The coarse level's solution carried to this lattice, and the levels below.
+    fn coarse_solve(
+        &self,
+        coarse: &ContactGrid,
+        parent: &[usize],
+        kernel: Option<&TensorKernel>,
+    ) -> Option<(WarmStart, usize)> {
         let load = match self.load {
             Load::Moment { moment, centre } => Load::Moment {
                 moment,
@@ -505,13 +538,13 @@ impl<'a> FastProblem<'a> {
             sum.iter().map(|&(x, y, m)| (x / m.max(1) as f64, y / m.max(1) as f64)).collect()
         });
         let problem = FastProblem {
-            grid: &coarse,
+            grid: coarse,
             load,
             config,
             prescribed: prescribed.as_deref(),
             ..self.clone()
         };
-        let s = problem.solve().ok()?;
+        let s = problem.solve_nested(kernel).ok()?;
         let traction = parent.iter().map(|&c| s.traction[c]).collect();
         let state = parent.iter().map(|&c| s.state[c]).collect();
         Some((
@@ -597,6 +630,16 @@ impl<'a> FastProblem<'a> {
         }
         Solver::new(self, op, scratch).run(None)
     }
+}
+
+/// What [`FastProblem::solve`]'s coarse levels hand to the fine lattice.
+struct Coarse {
+    /// The start and the number of levels below, if the lattice nests.
+    start: Option<(WarmStart, usize)>,
+    /// This lattice's kernel, computed for the levels (top level only).
+    kernel: Option<TensorKernel>,
+    /// Wall time of computing it, seconds (part of the set-up, not of the coarse levels).
+    kernel_seconds: f64,
 }
 
 /// Resultant force and moment about `centre` of element tractions.
