@@ -160,28 +160,8 @@ impl Solver<'_, '_> {
         r: &[f64],
         z: &mut [f64],
     ) -> [f64; 3] {
-        // Adds row_i z_i to the block's sum, in index order.
-        let tally = |c: &mut [f64; 3], i: usize, zi: f64| {
-            if let Some(rows) = rows {
-                for (cj, rj) in c.iter_mut().zip(rows[i]) {
-                    *cj += rj * zi;
-                }
-            }
-        };
         let Some(op) = &self.prec else {
-            z.par_chunks_mut(REDUCE_CHUNK)
-                .enumerate()
-                .map(|(b, zc)| {
-                    let mut c = [0.0; 3];
-                    for (o, zv) in zc.iter_mut().enumerate() {
-                        let i = b * REDUCE_CHUNK + o;
-                        *zv = minv[i] * r[i];
-                        tally(&mut c, i, *zv);
-                    }
-                    c
-                })
-                .collect_into_vec(&mut red.parts);
-            return red.total();
+            return fill_tallied(red, z, rows, |i| minv[i] * r[i]);
         };
         let (px, py, vx, vy) = (&mut self.wx, &mut self.wy, &mut self.vx, &mut self.vy);
         px.par_iter_mut().zip(py.par_iter_mut()).enumerate().for_each(|(k, (a, b))| {
@@ -196,25 +176,15 @@ impl Solver<'_, '_> {
         });
         op.apply(px, py, vx, vy, self.scratch);
         let (vx, vy) = (&*vx, &*vy);
-        z.par_chunks_mut(REDUCE_CHUNK)
-            .enumerate()
-            .map(|(b, zc)| {
-                let mut c = [0.0; 3];
-                for (o, zv) in zc.iter_mut().enumerate() {
-                    let i = b * REDUCE_CHUNK + o;
-                    let (d, w) = (dofs[i], wt[i]);
-                    let fourier = w * (d.e.0 * vx[d.k as usize] + d.e.1 * vy[d.k as usize]);
-                    *zv = if d.stick {
-                        fourier
-                    } else {
-                        fourier + SLIP_JACOBI * (1.0 - w * w) * minv[i] * r[i]
-                    };
-                    tally(&mut c, i, *zv);
-                }
-                c
-            })
-            .collect_into_vec(&mut red.parts);
-        red.total()
+        fill_tallied(red, z, rows, |i| {
+            let (d, w) = (dofs[i], wt[i]);
+            let fourier = w * (d.e.0 * vx[d.k as usize] + d.e.1 * vy[d.k as usize]);
+            if d.stick {
+                fourier
+            } else {
+                fourier + SLIP_JACOBI * (1.0 - w * w) * minv[i] * r[i]
+            }
+        })
     }
 
     /// Preconditioned projected CG for
@@ -449,6 +419,34 @@ impl Solver<'_, '_> {
 /// choice: 24 at 256 across and T/fP = 0.1, 22 at 128 across and 0.3, 33 at 64 across and
 /// 0.5 (Jacobi alone: 32 and 39 for the last two).
 const SLIP_JACOBI: f64 = 0.25;
+
+/// `z[i] = value(i)` for every `i`, written in the fixed blocks of [`Reducer`] (in parallel),
+/// and with `rows` the sums $\sum_i$ `rows[i][j]` $z_i$ taken as $z$ is written (each block's
+/// in index order, the blocks' added in order); zero without `rows`.
+fn fill_tallied(
+    red: &mut Reducer,
+    z: &mut [f64],
+    rows: Option<&[[f64; 3]]>,
+    value: impl Fn(usize) -> f64 + Sync + Send,
+) -> [f64; 3] {
+    z.par_chunks_mut(REDUCE_CHUNK)
+        .enumerate()
+        .map(|(b, zc)| {
+            let mut c = [0.0; 3];
+            for (o, zv) in zc.iter_mut().enumerate() {
+                let i = b * REDUCE_CHUNK + o;
+                *zv = value(i);
+                if let Some(rows) = rows {
+                    for (cj, rj) in c.iter_mut().zip(rows[i]) {
+                        *cj += rj * *zv;
+                    }
+                }
+            }
+            c
+        })
+        .collect_into_vec(&mut red.parts);
+    red.total()
+}
 
 /// Block length of the deterministic reductions: the sums of the CG iteration are taken in
 /// fixed blocks (in parallel) and the block sums added in order, so a solve gives the same
