@@ -10,28 +10,21 @@
 //! (`line`: tractions along the load, the LP's one-direction assumption).
 
 use std::time::Instant;
+use stickslip_benches::history_bench::HistoryBench;
 use stickslip_benches::process::{cpu_seconds, peak_rss};
-use stickslip_halfspace::Material;
-use stickslip_lattice::ContactGrid;
 use stickslip_traction::closed::Deresiewicz;
 use stickslip_traction::history::{HistoryDirections, HistoryProblem, LoadPath, PathControl};
-use stickslip_traction::{Error, FastConfig, FastProblem, Load, Tolerance};
+use stickslip_traction::{Error, FastProblem, Load};
 
 fn main() {
     let arg = |i: usize| std::env::args().nth(i);
-    let across: usize = arg(1).and_then(|a| a.parse().ok()).unwrap_or(128);
-    let per: usize = arg(2).and_then(|a| a.parse().ok()).unwrap_or(50);
-    let tol: f64 = arg(3).and_then(|a| a.parse().ok()).unwrap_or(1e-10);
     let directions = if arg(4).is_some_and(|a| a == "line") {
         HistoryDirections::Line
     } else {
         HistoryDirections::Free
     };
-    let (p, f) = (2160.0, 0.1);
-    let s = Material::new(30e6, 0.3).expect("material");
-    let a = (3.0 * p * 2.0 * s.normal_compliance() / 4.0).cbrt();
-    let grid = ContactGrid::hertz_circle(a, p, across).expect("grid");
-    let config = FastConfig::new(Tolerance::relative(tol).expect("tol"), 100).expect("config");
+    let HistoryBench { across, per, tol, p, f, steel: s, a, grid, config } =
+        HistoryBench::from_args();
     let ts = 0.5 * f * p;
 
     // A cold solve of the same lattice at T*, the reference cost.

@@ -13,10 +13,9 @@
 //! `cargo run --release -p stickslip-benches --example warm_probe -- 256 50 [tolerance]`
 
 use std::time::Instant;
-use stickslip_halfspace::Material;
-use stickslip_lattice::ContactGrid;
+use stickslip_benches::history_bench::HistoryBench;
 use stickslip_traction::history::{HistoryProblem, LoadPath, PathControl};
-use stickslip_traction::{Error, FastConfig, FastProblem, Load, Tolerance, WarmStart};
+use stickslip_traction::{Error, FastProblem, Load, WarmStart};
 
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
@@ -24,15 +23,8 @@ fn median(mut v: Vec<f64>) -> f64 {
 }
 
 fn main() {
-    let arg = |i: usize| std::env::args().nth(i);
-    let across: usize = arg(1).and_then(|a| a.parse().ok()).unwrap_or(128);
-    let per: usize = arg(2).and_then(|a| a.parse().ok()).unwrap_or(50);
-    let tol: f64 = arg(3).and_then(|a| a.parse().ok()).unwrap_or(1e-10);
-    let (p, f) = (2160.0, 0.1);
-    let s = Material::new(30e6, 0.3).expect("material");
-    let a = (3.0 * p * 2.0 * s.normal_compliance() / 4.0).cbrt();
-    let grid = ContactGrid::hertz_circle(a, p, across).expect("grid");
-    let config = FastConfig::new(Tolerance::relative(tol).expect("tol"), 100).expect("config");
+    let HistoryBench { across, per, tol, p, f, steel: s, grid, config, .. } =
+        HistoryBench::from_args();
     let ts = 0.5 * f * p;
     let problem = |t: f64| {
         FastProblem::new(&grid, [s, s], f, Load::polar(t, 0.0).expect("load"))

@@ -11,11 +11,13 @@
 //!   (`cargo bench -p stickslip-benches`).
 //! - [`fast_sweep`]: the fast solver's robustness sweep (issue 20), run by
 //!   `tests/stability_fast.rs` in CI and by the example `fast_large` at 512 and 1024 across.
+//! - [`history_bench`]: the sphere, lattice and arguments the load-history examples share.
 //! - The hard-case stability suite is `tests/stability.rs`; its case list is
 //!   `docs/hard-cases.md`.
 
 pub mod accuracy;
 pub mod data;
 pub mod fast_sweep;
+pub mod history_bench;
 pub mod process;
 pub mod surfaces;

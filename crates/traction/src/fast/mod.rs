@@ -56,7 +56,7 @@
 //! `newton/pcg.rs`). The restriction of an inverse is not the inverse of the restriction, so
 //! the preconditioned system is not the identity near the stick boundary, but the spread of
 //! its spectrum no longer grows like the lattice size. Measured on the Cattaneo sphere
-//! (T = 0.5 fP, residual $10^{-8}$, nested start, `fast_probe N`): 22, 21, 23 and 31 CG steps
+//! (T = 0.5 fP, residual $10^{-8}$, nested start, `fast_probe N`): 22, 21, 23 and 31–32 CG steps
 //! at 128 (T = 0.3 fP), 256, 512 and 1024 cells across, where Jacobi on the slip tangents took
 //! 32, 41, 53 and 75; near gross slip (T = 0.99999 fP) 11 at 512 across (Jacobi 12). From a
 //! cold start (no nesting, `fast_probe N 0.5 cold`) 42 and 49 at 128 and 256 across, where
